@@ -1,0 +1,54 @@
+/**
+ * @file Combination.h
+ * @brief Linear combinations of transformations in log space (Alexa eq. 5-7,
+ *        Kaji & Ochiai eq. 9) and the relative form (Hawkins & Grimm eq. 7).
+ *
+ *   r (.) A            = exp(r log A)
+ *   A (+) B            = exp(log A + log B)
+ *   (+)_i w_i (.) T_i  = exp(sum_i w_i log T_i)
+ *
+ * The absolute form combines the logs of the keys themselves. The relative form combines
+ * about a reference key R:  exp(sum_i w_i log(T_i R^-1)) R  (weights summing to 1), so
+ * that R sits at the identity, where both logs are best conditioned, and rotations between
+ * a key and R are taken the short way. Hawkins & Grimm put the key with the largest weight
+ * at the identity.
+ */
+#ifndef lct_Combination_h
+#define lct_Combination_h
+
+#include "vtkLCTModule.h"
+
+#include "lct/LogCoords.h"
+#include "lct/Status.h"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+
+namespace lct
+{
+
+/// sum_i weights[i] * coords[i]
+VTKLCT_EXPORT LogCoords weightedSum(
+  const double* weights, const LogCoords* coords, std::size_t count) noexcept;
+
+/// (1 - t) a + t b
+inline LogCoords lerp(const LogCoords& a, const LogCoords& b, double t)
+{
+  return (1.0 - t) * a + t * b;
+}
+
+/// exp(sum_i w_i log T_i). Fails when a key has no log or the result is not finite.
+VTKLCT_EXPORT Result<Eigen::Matrix4d> combine(const double* weights, const Eigen::Matrix4d* keys,
+  std::size_t count, Parametrisation p);
+
+/// exp(sum_i w_i log(T_i R^-1)) R with R = keys[reference] (Hawkins & Grimm eq. 7).
+VTKLCT_EXPORT Result<Eigen::Matrix4d> combineRelative(const double* weights,
+  const Eigen::Matrix4d* keys, std::size_t count, std::size_t reference, Parametrisation p);
+
+/// The index of the largest weight (the first one on ties); 0 when count is 0.
+VTKLCT_EXPORT std::size_t largestWeight(const double* weights, std::size_t count) noexcept;
+
+} // namespace lct
+
+#endif

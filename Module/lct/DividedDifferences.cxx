@@ -1,0 +1,240 @@
+#include "lct/DividedDifferences.h"
+
+#include <cmath>
+#include <limits>
+
+namespace lct
+{
+
+namespace
+{
+
+using Complex = std::complex<double>;
+
+inline double realPart(double x)
+{
+  return x;
+}
+inline double realPart(const Complex& z)
+{
+  return z.real();
+}
+
+inline double magnitude(double x)
+{
+  return std::abs(x);
+}
+// |z| without the overflow guards of std::abs: our nodes are far from overflow.
+inline double magnitude(const Complex& z)
+{
+  return std::sqrt(z.real() * z.real() + z.imag() * z.imag());
+}
+
+template <typename Scalar>
+Scalar evaluate(ScalarFunction f, const Scalar& z)
+{
+  switch (f)
+  {
+    case ScalarFunction::Exp:
+      return std::exp(z);
+    case ScalarFunction::Log:
+      return std::log(z);
+    case ScalarFunction::Sqrt:
+      return std::sqrt(z);
+  }
+  return z;
+}
+
+/// Whether the nodes of a subset, of diameter `diameter` about `centre`, are close enough for
+/// the Taylor series: within radius 1 for exp (terms fall like 1/k!), within a quarter of
+/// |centre| for log and sqrt (terms fall like 4^-k). Log and sqrt also need the centre in the
+/// right half plane, or the disc could straddle the branch cut.
+template <typename Scalar>
+bool useSeries(ScalarFunction f, const Scalar& centre, double diameter)
+{
+  if (f == ScalarFunction::Exp)
+  {
+    return diameter <= 1.0;
+  }
+  return realPart(centre) > 0.0 && diameter <= 0.25 * magnitude(centre);
+}
+
+/// Products without the NaN/Inf recovery of the C99 complex multiply (__muldc3): the nodes
+/// here are finite by construction, and this is the inner loop of the series.
+inline double multiply(double a, double b)
+{
+  return a * b;
+}
+inline Complex multiply(const Complex& a, const Complex& b)
+{
+  return Complex(a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real());
+}
+
+/// f[nodes in mask] from the Taylor series of f about the centroid c of those nodes:
+/// sum_{k >= order} a_k h_{k - order}(x - c), a_k = f^(k)(c) / k!. The complete homogeneous
+/// polynomials h_j are built one degree at a time (h_j(x_1..x_v) = h_j(x_1..x_{v-1}) +
+/// x_v h_{j-1}(x_1..x_v)), so the work stops as soon as the terms fall below round-off.
+template <typename Scalar>
+Scalar seriesDividedDifference(
+  ScalarFunction f, const Scalar* nodes, int count, unsigned mask, int order)
+{
+  constexpr int kMaxDegree = 80;
+  Scalar w[4];
+  int m = 0;
+  Scalar centre(0.0);
+  for (int i = 0; i < count; ++i)
+  {
+    if (mask & (1u << i))
+    {
+      w[m++] = nodes[i];
+      centre += nodes[i];
+    }
+  }
+  centre /= static_cast<double>(m);
+  for (int v = 0; v < m; ++v)
+  {
+    w[v] -= centre;
+  }
+
+  // a_k by recurrence in k, from a_0 = f(c).
+  const Scalar inverseCentre = Scalar(1.0) / centre;
+  Scalar a = evaluate(f, centre);
+  Scalar inversePower(1.0); // (1/c)^k, for log
+  auto advance = [&](int k) {
+    switch (f)
+    {
+      case ScalarFunction::Exp:
+        a /= static_cast<double>(k);
+        break;
+      case ScalarFunction::Log:
+        inversePower = multiply(inversePower, inverseCentre);
+        a = ((k % 2) ? 1.0 : -1.0) / static_cast<double>(k) * inversePower;
+        break;
+      case ScalarFunction::Sqrt:
+        a = multiply(a, (1.5 - k) / static_cast<double>(k) * inverseCentre);
+        break;
+    }
+  };
+  for (int k = 1; k <= order; ++k)
+  {
+    advance(k);
+  }
+
+  // hv[v] = h_j(w_0 .. w_v) for the current degree j.
+  Scalar hv[4];
+  for (int v = 0; v < m; ++v)
+  {
+    hv[v] = Scalar(1.0);
+  }
+  Scalar sum = a; // j = 0: h_0 = 1
+  int negligible = 0;
+  for (int j = 1; j <= kMaxDegree; ++j)
+  {
+    Scalar previous(0.0); // h_j of the first v variables, v = 0
+    for (int v = 0; v < m; ++v)
+    {
+      hv[v] = previous + multiply(w[v], hv[v]);
+      previous = hv[v];
+    }
+    advance(order + j);
+    const Scalar term = multiply(a, hv[m - 1]);
+    sum += term;
+    // Stop after two consecutive terms below round-off of the sum.
+    if (magnitude(term) <= 0.25 * std::numeric_limits<double>::epsilon() * magnitude(sum))
+    {
+      if (++negligible == 2)
+      {
+        break;
+      }
+    }
+    else
+    {
+      negligible = 0;
+    }
+  }
+  return sum;
+}
+
+template <typename Scalar>
+DividedDifferenceTable<Scalar> computeTable(ScalarFunction f, const Scalar* nodes, int count)
+{
+  DividedDifferenceTable<Scalar> out;
+  const unsigned full = (1u << count) - 1u;
+  // Removing bits from a mask makes it smaller, so in increasing mask order every proper
+  // subset is ready before the subsets that contain it.
+  for (unsigned mask = 1; mask <= full; ++mask)
+  {
+    int m = 0;
+    int first = -1;
+    for (int i = 0; i < count; ++i)
+    {
+      if (mask & (1u << i))
+      {
+        if (first < 0)
+        {
+          first = i;
+        }
+        ++m;
+      }
+    }
+    if (m == 1)
+    {
+      out.table[mask] = evaluate(f, nodes[first]);
+      continue;
+    }
+    // The two farthest nodes of the subset.
+    int ia = -1;
+    int ib = -1;
+    double diameter = -1.0;
+    Scalar centre(0.0);
+    for (int i = 0; i < count; ++i)
+    {
+      if (!(mask & (1u << i)))
+      {
+        continue;
+      }
+      centre += nodes[i];
+      for (int j = i + 1; j < count; ++j)
+      {
+        if (mask & (1u << j))
+        {
+          const double d = magnitude(nodes[i] - nodes[j]);
+          if (d > diameter)
+          {
+            diameter = d;
+            ia = i;
+            ib = j;
+          }
+        }
+      }
+    }
+    centre /= static_cast<double>(m);
+    if (useSeries(f, centre, diameter))
+    {
+      out.table[mask] = seriesDividedDifference(f, nodes, count, mask, m - 1);
+    }
+    else
+    {
+      // f[S] = (f[S \ a] - f[S \ b]) / (b - a), |b - a| = diameter, never small here.
+      const unsigned withoutA = mask & ~(1u << ia);
+      const unsigned withoutB = mask & ~(1u << ib);
+      out.table[mask] = (out.table[withoutA] - out.table[withoutB]) / (nodes[ib] - nodes[ia]);
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+DividedDifferenceTable<double> dividedDifferences(ScalarFunction f, const double* nodes, int count)
+{
+  return computeTable(f, nodes, count);
+}
+
+DividedDifferenceTable<Complex> dividedDifferences(
+  ScalarFunction f, const Complex* nodes, int count)
+{
+  return computeTable(f, nodes, count);
+}
+
+} // namespace lct

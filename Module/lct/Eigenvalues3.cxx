@@ -1,0 +1,93 @@
+#include "lct/Eigenvalues3.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lct
+{
+
+namespace
+{
+constexpr double kTwoPiOver3 = 2.0943951023931954923;
+}
+
+Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
+{
+  const double shift = a.trace() / 3.0;
+  const double b00 = a(0, 0) - shift;
+  const double b11 = a(1, 1) - shift;
+  const double b22 = a(2, 2) - shift;
+  const double b01 = a(0, 1);
+  const double b02 = a(0, 2);
+  const double b12 = a(1, 2);
+  // tr(B^2)/6, a sum of squares: no cancellation.
+  const double offDiagonal = b01 * b01 + b02 * b02 + b12 * b12;
+  const double p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offDiagonal) / 6.0;
+  if (p2 <= 0.0)
+  {
+    return Eigen::Vector3d::Constant(shift);
+  }
+  const double p = std::sqrt(p2);
+  // det(B / p) / 2 lies in [-1, 1]; clamp against round-off.
+  const double detB = b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) +
+    b02 * (b01 * b12 - b11 * b02);
+  const double r = std::clamp(detB / (2.0 * p2 * p), -1.0, 1.0);
+  const double phi = std::acos(r) / 3.0;
+  const double largest = shift + 2.0 * p * std::cos(phi);
+  const double smallest = shift + 2.0 * p * std::cos(phi + kTwoPiOver3);
+  const double middle = shift + 2.0 * p * std::cos(phi - kTwoPiOver3);
+  // phi in [0, pi/3] orders them; the clamp keeps round-off from swapping neighbours.
+  return Eigen::Vector3d(largest, std::clamp(middle, smallest, largest), smallest);
+}
+
+GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
+{
+  const double shift = a.trace() / 3.0;
+  Eigen::Matrix3d b = a;
+  b.diagonal().array() -= shift;
+  // Characteristic polynomial of B: y^3 + p y + q with p = sum of principal 2x2 minors,
+  // q = -det B.
+  const double p = b(0, 0) * b(1, 1) - b(0, 1) * b(1, 0) + b(0, 0) * b(2, 2) - b(0, 2) * b(2, 0) +
+    b(1, 1) * b(2, 2) - b(1, 2) * b(2, 1);
+  const double q = -b.determinant();
+  const double halfQ = 0.5 * q;
+  const double thirdP = p / 3.0;
+  const double discriminant = halfQ * halfQ + thirdP * thirdP * thirdP;
+
+  GeneralEigenvalues out;
+  if (discriminant > 0.0)
+  {
+    // One real root and a conjugate pair (Cardano). u^3 is formed without cancellation and
+    // v = -p / (3u), so that u + v and u - v come from well-separated terms.
+    const double sqrtD = std::sqrt(discriminant);
+    const double u = std::cbrt(-halfQ - std::copysign(sqrtD, halfQ));
+    const double v = (u != 0.0) ? -thirdP / u : 0.0;
+    const double real = u + v;
+    const double imag = 0.8660254037844386468 * std::abs(u - v); // sqrt(3)/2
+    out.complexPair = true;
+    out.values[0] = std::complex<double>(shift - 0.5 * real, imag);
+    out.values[1] = std::conj(out.values[0]);
+    out.values[2] = std::complex<double>(shift + real, 0.0);
+    return out;
+  }
+  if (thirdP >= 0.0)
+  {
+    // discriminant <= 0 and p >= 0 force p = q = 0: a triple root.
+    for (auto& value : out.values)
+    {
+      value = shift;
+    }
+    return out;
+  }
+  const double m = 2.0 * std::sqrt(-thirdP);
+  const double r = std::clamp(3.0 * q / (p * m), -1.0, 1.0);
+  const double phi = std::acos(r) / 3.0;
+  out.values[0] = shift + m * std::cos(phi);
+  out.values[1] = shift + m * std::cos(phi - kTwoPiOver3);
+  out.values[2] = shift + m * std::cos(phi + kTwoPiOver3);
+  return out;
+}
+
+} // namespace lct

@@ -1,0 +1,41 @@
+/**
+ * @file MatrixLogParametrisation.h
+ * @brief Alexa's parametrisation: the principal logarithm of the whole 4x4 affine matrix.
+ *
+ * log [A t; 0 1] = [log A, g(A) t; 0 0]  with g(x) = log(x)/(x - 1) = log[x, 1]
+ * exp [L u; 0 0] = [exp L, h(L) u; 0 1]  with h(x) = (e^x - 1)/x  = exp[x, 0]
+ *
+ * Both 3x3 functions are quadratic polynomials in the matrix whose coefficients are divided
+ * differences at the eigenvalues (cubic formula) and at the extra node 1 (log) or 0 (exp),
+ * so one table of divided differences gives the linear and the translation block at once.
+ * No iteration. Alexa App. A: a real logarithm exists only without negative real
+ * eigenvalues; such input fails with NoRealLogarithm. Near the negative real axis the log is
+ * ill-conditioned and the characteristic polynomial has a near-double root, so there the
+ * result is checked a posteriori (exp(log M) against M) and refused if inaccurate.
+ */
+#ifndef lct_MatrixLogParametrisation_h
+#define lct_MatrixLogParametrisation_h
+
+#include "vtkLCTModule.h"
+
+#include "lct/LogCoords.h"
+#include "lct/Status.h"
+
+#include <Eigen/Core>
+
+namespace lct
+{
+
+/// The principal log of M in LogCoords layout. Fails with NonFinite, NotAffine,
+/// NonPositiveDeterminant or NoRealLogarithm.
+VTKLCT_EXPORT Result<LogCoords> matrixLog(const Eigen::Matrix4d& m);
+
+/// exp of the 4x4 log matrix held by c. Fails with NonFinite.
+VTKLCT_EXPORT Result<Eigen::Matrix4d> matrixExp(const LogCoords& c);
+
+/// The 3x3 log matrix (skew + symmetric part) held by c.
+VTKLCT_EXPORT Eigen::Matrix3d logLinearPart(const LogCoords& c);
+
+} // namespace lct
+
+#endif

@@ -1,0 +1,55 @@
+#include "lct/PolarParametrisation.h"
+
+#include "lct/Affine.h"
+#include "lct/PolarDecomposition.h"
+#include "lct/SO3.h"
+#include "lct/Sym3.h"
+
+namespace lct
+{
+
+Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rotationReference)
+{
+  using R = Result<LogCoords>;
+  const Status valid = validateAffine(m);
+  if (valid != Status::Ok)
+  {
+    return R::failure(valid);
+  }
+  const auto polar = polarDecompose(m.topLeftCorner<3, 3>());
+  if (!polar)
+  {
+    return R::failure(polar.status);
+  }
+  const auto logStretch = logSPD(polar.value.stretch);
+  if (!logStretch)
+  {
+    return R::failure(logStretch.status);
+  }
+  R out;
+  translationPart(out.value) = m.topRightCorner<3, 1>();
+  rotationPart(out.value) = rotationReference
+    ? logSO3Nearest(polar.value.rotation, *rotationReference)
+    : logSO3(polar.value.rotation);
+  symmetricPart(out.value) = toSymmetricVector(logStretch.value);
+  return out;
+}
+
+Result<Eigen::Matrix4d> polarExp(const LogCoords& c)
+{
+  using R = Result<Eigen::Matrix4d>;
+  if (!c.allFinite())
+  {
+    return R::failure(Status::NonFinite);
+  }
+  const Eigen::Matrix3d linear =
+    expSO3(rotationPart(c)) * expSym(fromSymmetricVector(symmetricPart(c)));
+  R out{ makeAffine(linear, translationPart(c)), Status::Ok };
+  if (!out.value.allFinite())
+  {
+    return R::failure(Status::NonFinite);
+  }
+  return out;
+}
+
+} // namespace lct

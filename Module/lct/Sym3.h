@@ -1,0 +1,58 @@
+/**
+ * @file Sym3.h
+ * @brief exp of a symmetric 3x3 matrix; log and sqrt of a symmetric positive definite one.
+ *
+ * Kaji & Ochiai §4.2 and App. B (eq. 6, 7): with the eigenvalues l1 >= l2 >= l3 from the
+ * cubic formula and Z = Y - l2 I,
+ *
+ *   f(Y) = f[l2] I + f[l2,l1] Z + f[l2,l1,l3] Z (Z - (l1 - l2) I),
+ *
+ * which is the paper's a I + b Z + c Z^2 in Newton form. No eigenvectors are needed. The
+ * divided differences come from `dividedDifferences`, which sums Taylor series where the
+ * eigenvalues nearly coincide, so the result keeps full accuracy there too (the naive form
+ * of eq. 7 loses about six digits).
+ *
+ * Accuracy: about eps * cond(Y) relative; see Testing/Unit/TestSym3.cxx for the measured
+ * errors against Eigen's MatrixFunctions.
+ */
+#ifndef lct_Sym3_h
+#define lct_Sym3_h
+
+#include "vtkLCTModule.h"
+
+#include "lct/Status.h"
+
+#include <Eigen/Core>
+
+namespace lct
+{
+
+/// exp(Y) for symmetric Y (the upper triangle is read).
+VTKLCT_EXPORT Eigen::Matrix3d expSym(const Eigen::Matrix3d& y);
+
+/// The symmetric logarithm of an SPD matrix. Fails with `Singular` when an eigenvalue is
+/// not positive (to round-off).
+VTKLCT_EXPORT Result<Eigen::Matrix3d> logSPD(const Eigen::Matrix3d& s);
+
+/// The SPD square root of an SPD matrix; fails like `logSPD`.
+VTKLCT_EXPORT Result<Eigen::Matrix3d> sqrtSPD(const Eigen::Matrix3d& s);
+
+/// sym(3) as 6 numbers (xx, yy, zz, xy, yz, xz) and back.
+using SymmetricVector = Eigen::Matrix<double, 6, 1>;
+inline SymmetricVector toSymmetricVector(const Eigen::Matrix3d& y)
+{
+  SymmetricVector v;
+  v << y(0, 0), y(1, 1), y(2, 2), 0.5 * (y(0, 1) + y(1, 0)), 0.5 * (y(1, 2) + y(2, 1)),
+    0.5 * (y(0, 2) + y(2, 0));
+  return v;
+}
+inline Eigen::Matrix3d fromSymmetricVector(const SymmetricVector& v)
+{
+  Eigen::Matrix3d y;
+  y << v[0], v[3], v[5], v[3], v[1], v[4], v[5], v[4], v[2];
+  return y;
+}
+
+} // namespace lct
+
+#endif

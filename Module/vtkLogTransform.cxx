@@ -1,0 +1,383 @@
+#include "vtkLogTransform.h"
+
+#include "lct/Affine.h"
+#include "lct/Combination.h"
+#include "lct/Parametrisation.h"
+
+#include "vtkCollection.h"
+#include "vtkDoubleArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+
+#include <vector>
+
+vtkStandardNewMacro(vtkLogTransform);
+
+namespace
+{
+lct::Parametrisation toCore(int parametrisation)
+{
+  return parametrisation == vtkLogTransform::MATRIX_LOG ? lct::Parametrisation::MatrixLog
+                                                        : lct::Parametrisation::Polar;
+}
+
+Eigen::Matrix4d toEigen(const double elements[16])
+{
+  // vtkMatrix4x4 stores row-major elements.
+  return Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(elements);
+}
+} // namespace
+
+/// The coordinates and the matrix they stand for, always updated together.
+struct vtkLogTransform::State
+{
+  lct::LogCoords Coordinates = lct::LogCoords::Zero();
+  Eigen::Matrix4d Matrix = Eigen::Matrix4d::Identity();
+};
+
+//------------------------------------------------------------------------------
+vtkLogTransform::vtkLogTransform()
+  : Internal(new State)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkLogTransform::~vtkLogTransform()
+{
+  delete this->Internal;
+}
+
+//------------------------------------------------------------------------------
+// The only place the state changes: the coordinates are committed with their matrix, and only
+// when that matrix is finite.
+bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, const char* caller)
+{
+  const lct::LogCoords c = Eigen::Map<const lct::LogCoords>(coordinates);
+  const auto matrix = lct::exponential(c, toCore(parametrisation));
+  if (!matrix)
+  {
+    vtkErrorMacro(<< caller << ": the resulting transform is not finite ("
+                  << lct::describe(matrix.status) << "); unchanged.");
+    return false;
+  }
+  this->Internal->Coordinates = c;
+  this->Internal->Matrix = matrix.value;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetParametrisation(int parametrisation)
+{
+  if (parametrisation != POLAR && parametrisation != MATRIX_LOG)
+  {
+    vtkErrorMacro(<< "SetParametrisation: unknown parametrisation " << parametrisation
+                  << " (use POLAR or MATRIX_LOG); unchanged.");
+    return 0;
+  }
+  if (parametrisation == this->Parametrisation)
+  {
+    return 1;
+  }
+  const auto c = lct::logarithm(this->Internal->Matrix, toCore(parametrisation));
+  if (!c)
+  {
+    vtkErrorMacro(<< "SetParametrisation: the current transform has no "
+                  << lct::name(toCore(parametrisation))
+                  << " coordinates: " << lct::describe(c.status) << "; unchanged.");
+    return 0;
+  }
+  if (!this->Commit(c.value.data(), parametrisation, "SetParametrisation"))
+  {
+    return 0;
+  }
+  this->Parametrisation = parametrisation;
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLogTransform::GetParametrisationAsString()
+{
+  return lct::name(toCore(this->Parametrisation));
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetMatrix(vtkMatrix4x4* matrix)
+{
+  return this->SetMatrix(matrix, nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetMatrix(const double elements[16])
+{
+  return this->SetMatrixNear(elements, nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetMatrix(vtkMatrix4x4* matrix, vtkLogTransform* reference)
+{
+  if (!matrix)
+  {
+    vtkErrorMacro(<< "SetMatrix: null matrix; unchanged.");
+    return 0;
+  }
+  return this->SetMatrixNear(
+    matrix->GetData(), reference ? reference->Internal->Coordinates.data() : nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetMatrixNear(const double elements[16], const double* reference)
+{
+  if (!elements)
+  {
+    vtkErrorMacro(<< "SetMatrix: null elements; unchanged.");
+    return 0;
+  }
+  const lct::LogCoords referenceCoordinates =
+    reference ? lct::LogCoords(Eigen::Map<const lct::LogCoords>(reference)) : lct::LogCoords();
+  const auto c = lct::logarithm(
+    toEigen(elements), toCore(this->Parametrisation), reference ? &referenceCoordinates : nullptr);
+  if (!c)
+  {
+    vtkErrorMacro(<< "SetMatrix: " << lct::describe(c.status) << "; unchanged.");
+    return 0;
+  }
+  return this->Commit(c.value.data(), this->Parametrisation, "SetMatrix") ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetTransform(vtkLinearTransform* transform)
+{
+  if (!transform)
+  {
+    vtkErrorMacro(<< "SetTransform: null transform; unchanged.");
+    return 0;
+  }
+  if (transform == this)
+  {
+    return 1;
+  }
+  return this->SetMatrix(transform->GetMatrix());
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::SetLogCoordinates(const double coordinates[12])
+{
+  if (!coordinates)
+  {
+    vtkErrorMacro(<< "SetLogCoordinates: null coordinates; unchanged.");
+    return 0;
+  }
+  const lct::LogCoords c = Eigen::Map<const lct::LogCoords>(coordinates);
+  if (!c.allFinite())
+  {
+    vtkErrorMacro(<< "SetLogCoordinates: " << lct::describe(lct::Status::NonFinite)
+                  << "; unchanged.");
+    return 0;
+  }
+  if (!this->Commit(c.data(), this->Parametrisation, "SetLogCoordinates"))
+  {
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::GetLogCoordinates(double coordinates[12])
+{
+  Eigen::Map<lct::LogCoords> out(coordinates);
+  out = this->Internal->Coordinates;
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::Scale(double s)
+{
+  if (!std::isfinite(s))
+  {
+    vtkErrorMacro(<< "Scale: the factor " << s << " is not finite; unchanged.");
+    return 0;
+  }
+  const lct::LogCoords scaled = s * this->Internal->Coordinates;
+  if (!this->Commit(scaled.data(), this->Parametrisation, "Scale"))
+  {
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::Add(vtkLogTransform* other)
+{
+  if (!other)
+  {
+    vtkErrorMacro(<< "Add: null transform; unchanged.");
+    return 0;
+  }
+  vtkLogTransform* operands[2] = { this, other };
+  const double weights[2] = { 1.0, 1.0 };
+  return vtkLogTransform::LinearCombination(2, weights, operands, this);
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::LinearCombination(
+  int count, const double* weights, vtkLogTransform* const* transforms, vtkLogTransform* result)
+{
+  if (!result)
+  {
+    vtkGenericWarningMacro(<< "vtkLogTransform::LinearCombination: null result.");
+    return 0;
+  }
+  if (count < 0 || (count > 0 && (!weights || !transforms)))
+  {
+    vtkErrorWithObjectMacro(result, << "LinearCombination: invalid count or null arrays; "
+                                       "result unchanged.");
+    return 0;
+  }
+  const int parametrisation = result->Parametrisation;
+  lct::LogCoords sum = lct::LogCoords::Zero();
+  for (int i = 0; i < count; ++i)
+  {
+    vtkLogTransform* t = transforms[i];
+    if (!t || !std::isfinite(weights[i]))
+    {
+      vtkErrorWithObjectMacro(result, << "LinearCombination: transform " << i
+                                      << " is null or its weight is not finite; result "
+                                         "unchanged.");
+      return 0;
+    }
+    if (t->Parametrisation == parametrisation)
+    {
+      sum += weights[i] * t->Internal->Coordinates;
+      continue;
+    }
+    const auto c = lct::logarithm(t->Internal->Matrix, toCore(parametrisation));
+    if (!c)
+    {
+      vtkErrorWithObjectMacro(result, << "LinearCombination: transform " << i << " has no "
+                                      << lct::name(toCore(parametrisation))
+                                      << " coordinates: " << lct::describe(c.status)
+                                      << "; result unchanged.");
+      return 0;
+    }
+    sum += weights[i] * c.value;
+  }
+  if (!result->Commit(sum.data(), parametrisation, "LinearCombination"))
+  {
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::LinearCombination(
+  vtkCollection* transforms, vtkDoubleArray* weights, vtkLogTransform* result)
+{
+  if (!transforms || !weights || !result)
+  {
+    vtkGenericWarningMacro(<< "vtkLogTransform::LinearCombination: null argument.");
+    return 0;
+  }
+  const int count = transforms->GetNumberOfItems();
+  if (weights->GetNumberOfComponents() != 1 || weights->GetNumberOfTuples() != count)
+  {
+    vtkErrorWithObjectMacro(result, << "LinearCombination: " << count << " transforms but "
+                                    << weights->GetNumberOfTuples()
+                                    << " weights; result unchanged.");
+    return 0;
+  }
+  std::vector<vtkLogTransform*> items(count);
+  std::vector<double> w(count);
+  for (int i = 0; i < count; ++i)
+  {
+    items[i] = vtkLogTransform::SafeDownCast(transforms->GetItemAsObject(i));
+    if (!items[i])
+    {
+      vtkErrorWithObjectMacro(result, << "LinearCombination: item " << i
+                                      << " is not a vtkLogTransform; result unchanged.");
+      return 0;
+    }
+    w[i] = weights->GetValue(i);
+  }
+  return vtkLogTransform::LinearCombination(count, w.data(), items.data(), result);
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double t)
+{
+  if (!a || !b || !std::isfinite(t))
+  {
+    vtkErrorMacro(<< "Interpolate: null transform or non-finite t; unchanged.");
+    return 0;
+  }
+  vtkLogTransform* operands[2] = { a, b };
+  const double weights[2] = { 1.0 - t, t };
+  return vtkLogTransform::LinearCombination(2, weights, operands, this);
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::Identity()
+{
+  this->Internal->Coordinates.setZero();
+  this->Internal->Matrix.setIdentity();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::Inverse()
+{
+  State& s = *this->Internal;
+  if (this->Parametrisation == MATRIX_LOG)
+  {
+    // The principal log of M^-1 is -log M.
+    const lct::LogCoords negated = -s.Coordinates;
+    this->Commit(negated.data(), this->Parametrisation, "Inverse");
+    return;
+  }
+  // Polar: psi(M^-1) != -psi(M) unless the factors commute; recompute, keeping the winding of
+  // the rotation (the inverse's rotation is U^T, whose nearest log is near -w).
+  lct::LogCoords reference = -s.Coordinates;
+  const auto c =
+    lct::logarithm(lct::inverseAffine(s.Matrix), lct::Parametrisation::Polar, &reference);
+  if (!c)
+  {
+    vtkErrorMacro(<< "Inverse: " << lct::describe(c.status) << "; unchanged.");
+    return;
+  }
+  this->Commit(c.value.data(), this->Parametrisation, "Inverse");
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractTransform* vtkLogTransform::MakeTransform()
+{
+  return vtkLogTransform::New();
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::InternalUpdate()
+{
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(this->Matrix->GetData()) =
+    this->Internal->Matrix;
+  this->Matrix->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::InternalDeepCopy(vtkAbstractTransform* transform)
+{
+  this->Superclass::InternalDeepCopy(transform);
+  auto* other = static_cast<vtkLogTransform*>(transform);
+  *this->Internal = *other->Internal;
+  this->Parametrisation = other->Parametrisation;
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const lct::LogCoords& c = this->Internal->Coordinates;
+  os << indent << "Parametrisation: " << this->GetParametrisationAsString() << "\n";
+  os << indent << "Translation part: (" << c[0] << ", " << c[1] << ", " << c[2] << ")\n";
+  os << indent << "Rotation part: (" << c[3] << ", " << c[4] << ", " << c[5] << ")\n";
+  os << indent << "Symmetric part (xx, yy, zz, xy, yz, xz): (" << c[6] << ", " << c[7] << ", "
+     << c[8] << ", " << c[9] << ", " << c[10] << ", " << c[11] << ")\n";
+}

@@ -1,0 +1,365 @@
+// vtkLogTransform as VTK uses it: set/get, the LCT operations, VTK's transform protocol
+// (GetInverse, DeepCopy, MakeTransform, Concatenate, MTime) and every bad input.
+#include "vtkLogTransform.h"
+
+#include "lct/Combination.h"
+#include "lct/SO3.h"
+
+#include "RandomTransforms.h"
+
+#include "vtkCollection.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkTransform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+/// Counts ErrorEvents and keeps the last message, so tests can check errors are reported.
+class ErrorCounter : public vtkCommand
+{
+public:
+  static ErrorCounter* New() { return new ErrorCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = data ? static_cast<const char*>(data) : "";
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+void toVtk(const Eigen::Matrix4d& m, vtkMatrix4x4* out)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      out->SetElement(i, j, m(i, j));
+    }
+  }
+}
+
+Eigen::Matrix4d fromVtk(vtkMatrix4x4* m)
+{
+  Eigen::Matrix4d out;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      out(i, j) = m->GetElement(i, j);
+    }
+  }
+  return out;
+}
+
+Eigen::Matrix4d randomAffine(int seed)
+{
+  lct_test::RandomTransforms random(seed);
+  return random.Affine(lct_test::TransformClass::GeneralAffine);
+}
+
+struct Watched
+{
+  vtkNew<vtkLogTransform> transform;
+  vtkNew<ErrorCounter> errors;
+  Watched() { transform->AddObserver(vtkCommand::ErrorEvent, errors); }
+};
+} // namespace
+
+TEST(vtkLogTransform, DefaultIsPolarIdentity)
+{
+  vtkNew<vtkLogTransform> t;
+  EXPECT_EQ(t->GetParametrisation(), vtkLogTransform::POLAR);
+  EXPECT_STREQ(t->GetParametrisationAsString(), "Polar");
+  EXPECT_TRUE(fromVtk(t->GetMatrix()).isIdentity(0.0));
+}
+
+TEST(vtkLogTransform, ReproducesTheMatrixItWasSetFrom)
+{
+  for (int p : { vtkLogTransform::POLAR, vtkLogTransform::MATRIX_LOG })
+  {
+    for (int seed = 0; seed < 200; ++seed)
+    {
+      const Eigen::Matrix4d m = randomAffine(seed);
+      Watched w;
+      ASSERT_EQ(w.transform->SetParametrisation(p), 1);
+      vtkNew<vtkMatrix4x4> vm;
+      toVtk(m, vm);
+      if (!w.transform->SetMatrix(vm))
+      {
+        // Only MatrixLog may refuse, and then with a message.
+        ASSERT_EQ(p, vtkLogTransform::MATRIX_LOG);
+        ASSERT_EQ(w.errors->Count, 1);
+        continue;
+      }
+      EXPECT_LT(lct_test::blockError(fromVtk(w.transform->GetMatrix()), m), p == vtkLogTransform::POLAR ? 1e-13 : 5e-12);
+      double point[3] = { 1.0, -2.0, 0.5 };
+      double out[3];
+      w.transform->TransformPoint(point, out);
+      const Eigen::Vector3d expected = (m * Eigen::Vector4d(1.0, -2.0, 0.5, 1.0)).head<3>();
+      EXPECT_LT((Eigen::Vector3d(out[0], out[1], out[2]) - expected).norm(), 1e-12 * (1 + expected.norm()));
+    }
+  }
+}
+
+TEST(vtkLogTransform, ScaleAddInterpolateAndLinearCombination)
+{
+  vtkNew<vtkTransform> source;
+  source->Translate(1, 2, 3);
+  source->RotateZ(40);
+  source->Scale(2, 1, 1);
+  vtkNew<vtkLogTransform> a;
+  ASSERT_EQ(a->SetTransform(source), 1);
+
+  // 2 (.) A = A (+) A; (1/2)(.)A (+) (1/2)(.)A = A.
+  vtkNew<vtkLogTransform> twice;
+  twice->DeepCopy(a);
+  ASSERT_EQ(twice->Scale(2.0), 1);
+  vtkNew<vtkLogTransform> sum;
+  sum->DeepCopy(a);
+  ASSERT_EQ(sum->Add(a), 1);
+  EXPECT_LT(lct_test::blockError(fromVtk(twice->GetMatrix()), fromVtk(sum->GetMatrix())), 1e-14);
+
+  vtkNew<vtkLogTransform> identity;
+  vtkNew<vtkLogTransform> mid;
+  ASSERT_EQ(mid->Interpolate(identity, a, 1.0), 1);
+  EXPECT_LT(lct_test::blockError(fromVtk(mid->GetMatrix()), fromVtk(source->GetMatrix())), 1e-14);
+
+  vtkNew<vtkCollection> items;
+  items->AddItem(a);
+  items->AddItem(twice);
+  vtkNew<vtkDoubleArray> weights;
+  weights->InsertNextValue(1.0);
+  weights->InsertNextValue(-0.5);
+  vtkNew<vtkLogTransform> combination;
+  vtkNew<ErrorCounter> errors;
+  combination->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(vtkLogTransform::LinearCombination(items, weights, combination), 1) << errors->Last;
+  // 1 (.) A (+) (-1/2)(.)(2 (.) A) = identity.
+  EXPECT_LT(lct_test::blockError(fromVtk(combination->GetMatrix()), Eigen::Matrix4d::Identity()), 1e-14);
+
+  // Mixed parametrisations: inputs are converted to the result's, from their matrices. (The
+  // polar 2 (.) A is not the MatrixLog 2 (.) A, so the result is not the identity.)
+  vtkNew<vtkLogTransform> matrixLog;
+  matrixLog->SetParametrisationToMatrixLog();
+  ASSERT_EQ(vtkLogTransform::LinearCombination(items, weights, matrixLog), 1);
+  const Eigen::Matrix4d keys[2] = { fromVtk(a->GetMatrix()), fromVtk(twice->GetMatrix()) };
+  const double w[2] = { 1.0, -0.5 };
+  const auto expected = lct::combine(w, keys, 2, lct::Parametrisation::MatrixLog);
+  ASSERT_TRUE(expected.ok());
+  EXPECT_LT(lct_test::blockError(fromVtk(matrixLog->GetMatrix()), expected.value), 1e-14);
+}
+
+TEST(vtkLogTransform, InverseGetInverseAndConcatenate)
+{
+  for (int p : { vtkLogTransform::POLAR, vtkLogTransform::MATRIX_LOG })
+  {
+    vtkNew<vtkLogTransform> t;
+    t->SetParametrisation(p);
+    vtkNew<vtkMatrix4x4> vm;
+    toVtk(randomAffine(7), vm);
+    ASSERT_EQ(t->SetMatrix(vm), 1);
+    const Eigen::Matrix4d m = fromVtk(t->GetMatrix());
+
+    vtkLinearTransform* inverse = t->GetLinearInverse();
+    EXPECT_LT((fromVtk(inverse->GetMatrix()) * m - Eigen::Matrix4d::Identity()).norm(), 1e-13);
+    // The inverse follows later changes of t.
+    t->Scale(0.5);
+    const Eigen::Matrix4d half = fromVtk(t->GetMatrix());
+    EXPECT_LT((fromVtk(inverse->GetMatrix()) * half - Eigen::Matrix4d::Identity()).norm(), 1e-13);
+
+    vtkNew<vtkTransform> chain;
+    chain->Concatenate(t);
+    chain->Concatenate(inverse);
+    EXPECT_LT((fromVtk(chain->GetMatrix()) - Eigen::Matrix4d::Identity()).norm(), 1e-13);
+
+    t->Inverse();
+    EXPECT_LT((fromVtk(t->GetMatrix()) * half - Eigen::Matrix4d::Identity()).norm(), 1e-13);
+
+    vtkAbstractTransform* made = t->MakeTransform();
+    EXPECT_TRUE(vtkLogTransform::SafeDownCast(made) != nullptr);
+    made->Delete();
+  }
+}
+
+TEST(vtkLogTransform, InverseKeepsTheWindingOfASpin)
+{
+  vtkNew<vtkLogTransform> t;
+  const double spin[12] = { 0, 0, 0, 0, 0, 3.0 * lct_test::kPi, 0, 0, 0, 0, 0, 0 };
+  ASSERT_EQ(t->SetLogCoordinates(spin), 1);
+  t->Inverse();
+  double c[12];
+  t->GetLogCoordinates(c);
+  EXPECT_NEAR(c[5], -3.0 * lct_test::kPi, 1e-12);
+}
+
+TEST(vtkLogTransform, ReferenceKeepsTheRotationBranch)
+{
+  vtkNew<vtkLogTransform> previous;
+  vtkNew<vtkLogTransform> current;
+  for (int k = 1; k <= 6; ++k)
+  {
+    vtkNew<vtkTransform> key;
+    key->RotateZ(170.0 * k);
+    ASSERT_EQ(current->SetMatrix(key->GetMatrix(), previous), 1);
+    double c[12];
+    current->GetLogCoordinates(c);
+    EXPECT_NEAR(c[5], 170.0 * k * lct_test::kPi / 180.0, 1e-12);
+    previous->DeepCopy(current);
+  }
+}
+
+TEST(vtkLogTransform, DeepCopyCopiesStateAndParametrisation)
+{
+  vtkNew<vtkLogTransform> a;
+  a->SetParametrisationToMatrixLog();
+  vtkNew<vtkMatrix4x4> vm;
+  toVtk(randomAffine(3), vm);
+  ASSERT_EQ(a->SetMatrix(vm), 1);
+  vtkNew<vtkLogTransform> b;
+  b->DeepCopy(a);
+  EXPECT_EQ(b->GetParametrisation(), vtkLogTransform::MATRIX_LOG);
+  double ca[12], cb[12];
+  a->GetLogCoordinates(ca);
+  b->GetLogCoordinates(cb);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(ca[i], cb[i]);
+  }
+  EXPECT_EQ(fromVtk(a->GetMatrix()), fromVtk(b->GetMatrix()));
+}
+
+TEST(vtkLogTransform, ModifiedOnEveryChangeAndOnlyThen)
+{
+  vtkNew<vtkLogTransform> t;
+  vtkMTimeType before = t->GetMTime();
+  t->Scale(2.0);
+  EXPECT_GT(t->GetMTime(), before);
+  before = t->GetMTime();
+  const double c[12] = { 1, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0, 0 };
+  t->SetLogCoordinates(c);
+  EXPECT_GT(t->GetMTime(), before);
+  before = t->GetMTime();
+  t->SetParametrisationToMatrixLog();
+  EXPECT_GT(t->GetMTime(), before);
+  before = t->GetMTime();
+  t->Identity();
+  EXPECT_GT(t->GetMTime(), before);
+}
+
+TEST(vtkLogTransform, BadInputIsReportedAndLeavesTheStateUnchanged)
+{
+  Watched w;
+  vtkNew<vtkTransform> good;
+  good->Translate(1, 2, 3);
+  good->RotateX(30);
+  ASSERT_EQ(w.transform->SetTransform(good), 1);
+  double saved[12];
+  w.transform->GetLogCoordinates(saved);
+  const Eigen::Matrix4d savedMatrix = fromVtk(w.transform->GetMatrix());
+  const vtkMTimeType savedTime = w.transform->GetMTime();
+
+  auto expectUnchanged = [&](const char* what, int expectedErrors) {
+    double now[12];
+    w.transform->GetLogCoordinates(now);
+    for (int i = 0; i < 12; ++i)
+    {
+      EXPECT_EQ(now[i], saved[i]) << what;
+    }
+    EXPECT_EQ(fromVtk(w.transform->GetMatrix()), savedMatrix) << what;
+    EXPECT_EQ(w.transform->GetMTime(), savedTime) << what;
+    EXPECT_EQ(w.errors->Count, expectedErrors) << what;
+  };
+
+  int expected = 0;
+  vtkNew<vtkMatrix4x4> bad;
+
+  bad->Identity();
+  bad->SetElement(1, 2, std::nan(""));
+  EXPECT_EQ(w.transform->SetMatrix(bad), 0);
+  expectUnchanged("NaN", ++expected);
+  EXPECT_NE(w.errors->Last.find("NaN"), std::string::npos) << w.errors->Last;
+
+  bad->Identity();
+  bad->SetElement(0, 3, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(w.transform->SetMatrix(bad), 0);
+  expectUnchanged("Inf", ++expected);
+
+  bad->Identity();
+  bad->SetElement(3, 0, 0.1);
+  EXPECT_EQ(w.transform->SetMatrix(bad), 0);
+  expectUnchanged("projective", ++expected);
+  EXPECT_NE(w.errors->Last.find("bottom row"), std::string::npos) << w.errors->Last;
+
+  bad->Identity();
+  bad->SetElement(2, 2, -1.0);
+  EXPECT_EQ(w.transform->SetMatrix(bad), 0);
+  expectUnchanged("reflection", ++expected);
+  EXPECT_NE(w.errors->Last.find("determinant"), std::string::npos) << w.errors->Last;
+
+  bad->Identity();
+  bad->SetElement(2, 2, 0.0);
+  EXPECT_EQ(w.transform->SetMatrix(bad), 0);
+  expectUnchanged("singular", ++expected);
+
+  EXPECT_EQ(w.transform->SetMatrix(static_cast<vtkMatrix4x4*>(nullptr)), 0);
+  expectUnchanged("null matrix", ++expected);
+  EXPECT_EQ(w.transform->SetTransform(nullptr), 0);
+  expectUnchanged("null transform", ++expected);
+
+  const double nanCoordinates[12] = { 0, 0, 0, 0, 0, 0, std::nan(""), 0, 0, 0, 0, 0 };
+  EXPECT_EQ(w.transform->SetLogCoordinates(nanCoordinates), 0);
+  expectUnchanged("NaN coordinates", ++expected);
+  const double hugeCoordinates[12] = { 0, 0, 0, 0, 0, 0, 1000, 0, 0, 0, 0, 0 };
+  EXPECT_EQ(w.transform->SetLogCoordinates(hugeCoordinates), 0);
+  expectUnchanged("overflow", ++expected);
+  EXPECT_EQ(w.transform->Scale(std::nan("")), 0);
+  expectUnchanged("NaN factor", ++expected);
+  EXPECT_EQ(w.transform->Scale(1e300), 0);
+  expectUnchanged("overflowing factor", ++expected);
+  EXPECT_EQ(w.transform->Add(nullptr), 0);
+  expectUnchanged("null addend", ++expected);
+  EXPECT_EQ(w.transform->Interpolate(nullptr, w.transform, 0.5), 0);
+  expectUnchanged("null interpolant", ++expected);
+  EXPECT_EQ(w.transform->SetParametrisation(7), 0);
+  expectUnchanged("unknown parametrisation", ++expected);
+
+  // MatrixLog mode: a half turn with non-uniform scale has no real logarithm.
+  ASSERT_EQ(w.transform->SetParametrisationToMatrixLog(), 1);
+  w.transform->GetLogCoordinates(saved);
+  vtkNew<vtkMatrix4x4> halfTurn;
+  halfTurn->Identity();
+  halfTurn->SetElement(0, 0, -2.0);
+  halfTurn->SetElement(1, 1, -1.0);
+  EXPECT_EQ(w.transform->SetMatrix(halfTurn), 0);
+  EXPECT_NE(w.errors->Last.find("no real matrix logarithm"), std::string::npos) << w.errors->Last;
+  EXPECT_EQ(w.errors->Count, ++expected);
+
+  // ... and a polar transform holding it cannot switch to MatrixLog.
+  vtkNew<vtkLogTransform> polar;
+  vtkNew<ErrorCounter> polarErrors;
+  polar->AddObserver(vtkCommand::ErrorEvent, polarErrors);
+  ASSERT_EQ(polar->SetMatrix(halfTurn), 1);
+  EXPECT_EQ(polar->SetParametrisationToMatrixLog(), 0);
+  EXPECT_EQ(polar->GetParametrisation(), vtkLogTransform::POLAR);
+  EXPECT_EQ(polarErrors->Count, 1);
+
+  // LinearCombination: count mismatch and wrong item types.
+  vtkNew<vtkCollection> items;
+  items->AddItem(polar);
+  vtkNew<vtkDoubleArray> weights;
+  EXPECT_EQ(vtkLogTransform::LinearCombination(items, weights, polar), 0);
+  EXPECT_EQ(polarErrors->Count, 2);
+  items->AddItem(halfTurn);
+  weights->InsertNextValue(1.0);
+  weights->InsertNextValue(1.0);
+  EXPECT_EQ(vtkLogTransform::LinearCombination(items, weights, polar), 0);
+  EXPECT_EQ(polarErrors->Count, 3);
+}
