@@ -49,6 +49,19 @@ VTKLCT_EXPORT DividedDifferenceTable<double> dividedDifferences(
 VTKLCT_EXPORT DividedDifferenceTable<std::complex<double>> dividedDifferences(
   ScalarFunction f, const std::complex<double>* nodes, int count);
 
+/// The Newton coefficients f[x0], f[x0,x1], f[x0,x1,x2] at three real nodes: the fast path of
+/// the symmetric functions. Pairs use closed forms without cancellation
+/// (e^b expm1(a-b)/(a-b), log1p((a-b)/b)/(a-b), 1/(sqrt a + sqrt b)); the triple uses the
+/// Taylor series only when all three nodes cluster. Log and Sqrt need positive nodes.
+struct NewtonCoefficients3
+{
+  double c0; ///< f[x0]
+  double c1; ///< f[x0, x1]
+  double c2; ///< f[x0, x1, x2]
+};
+VTKLCT_EXPORT NewtonCoefficients3 newtonCoefficients(
+  ScalarFunction f, double x0, double x1, double x2);
+
 } // namespace lct
 
 #endif

@@ -35,9 +35,12 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
     b02 * (b01 * b12 - b11 * b02);
   const double r = std::clamp(detB / (2.0 * p2 * p), -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
-  const double largest = shift + 2.0 * p * std::cos(phi);
-  const double smallest = shift + 2.0 * p * std::cos(phi + kTwoPiOver3);
-  const double middle = shift + 2.0 * p * std::cos(phi - kTwoPiOver3);
+  // cos(phi -+ 2 pi/3) = -cos(phi)/2 +- sqrt(3)/2 sin(phi): one cos and one sin for all three.
+  const double c = std::cos(phi);
+  const double s = 0.8660254037844386468 * std::sin(phi);
+  const double largest = shift + 2.0 * p * c;
+  const double smallest = shift + p * (-c - 2.0 * s);
+  const double middle = shift + p * (-c + 2.0 * s);
   // phi in [0, pi/3] orders them; the clamp keeps round-off from swapping neighbours.
   return Eigen::Vector3d(largest, std::clamp(middle, smallest, largest), smallest);
 }

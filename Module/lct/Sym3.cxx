@@ -14,15 +14,15 @@ namespace
 /// f(Y) by the Newton form about the middle eigenvalue (Kaji & Ochiai App. B).
 Eigen::Matrix3d applySymmetric(ScalarFunction f, const Eigen::Matrix3d& y, const Eigen::Vector3d& l)
 {
-  const double nodes[3] = { l[1], l[0], l[2] }; // middle, largest, smallest
-  const auto dd = dividedDifferences(f, nodes, 3);
+  // Nodes in the order middle, largest, smallest.
+  const NewtonCoefficients3 c = newtonCoefficients(f, l[1], l[0], l[2]);
   Eigen::Matrix3d z = y.selfadjointView<Eigen::Upper>();
   z.diagonal().array() -= l[1];
   Eigen::Matrix3d zShifted = z;
   zShifted.diagonal().array() -= l[0] - l[1];
-  Eigen::Matrix3d result = dd[0b111] * (z * zShifted);
-  result += dd[0b011] * z;
-  result.diagonal().array() += dd[0b001];
+  Eigen::Matrix3d result = c.c2 * (z * zShifted);
+  result += c.c1 * z;
+  result.diagonal().array() += c.c0;
   // The exact result is symmetric; remove the round-off asymmetry of the product.
   return 0.5 * (result + result.transpose());
 }
