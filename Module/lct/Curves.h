@@ -1,0 +1,59 @@
+/**
+ * @file Curves.h
+ * @brief Keyframe curve schemes as weights over keys: every curve point is ONE weighted
+ *        combination of keys, which the parametrisations turn into one exp (Alexa §6.1,
+ *        Hawkins & Grimm §3.3).
+ *
+ * Key times must be strictly increasing; t is clamped to [first, last].
+ * - Linear: (1 - u, u) on the segment holding t.
+ * - CatmullRom: the interpolating C1 cubic Hermite spline with tangents
+ *   (p[i+1] - p[i-1]) / (t[i+1] - t[i-1]) on non-uniform times (one-sided at the ends), the
+ *   scheme of VTK's default Kochanek spline with zero tension, bias and continuity.
+ * - BSpline: the approximating uniform cubic B-spline over the key index (Hawkins & Grimm
+ *   §3.3.1 use degree 2; the cubic is C2), with reflected phantom keys
+ *   p[-1] = 2 p[0] - p[1] so that the curve starts and ends on the end keys.
+ * - Subdivision: the limit of the 4-point scheme (-1/16, 9/16, 9/16, -1/16), i.e. the
+ *   Deslauriers-Dubuc fundamental function (support [-3, 3]) over the key index, sampled once
+ *   at 2^-10 and interpolated by C1 cubic Hermite pieces; interpolating and C1. Boundary keys by the corrected
+ *   reflection log M[-1] = 2 log M[0] - log M[1] (SEEDS.md erratum to Hawkins & Grimm eq. 11).
+ * BSpline and Subdivision map time to the key index piecewise-linearly, so with non-uniform key
+ * times they are C1 in the index and C0 in time at the keys.
+ */
+#ifndef lct_Curves_h
+#define lct_Curves_h
+
+#include "vtkLCTModule.h"
+
+#include <cstddef>
+
+namespace lct
+{
+
+enum class CurveScheme
+{
+  Linear,
+  CatmullRom,
+  BSpline,
+  Subdivision
+};
+
+/// A sparse weight vector over keys (at most 8 keys carry weight at any t).
+struct CurveWeights
+{
+  static constexpr int kCapacity = 8;
+  int count = 0;
+  int key[kCapacity];
+  double weight[kCapacity];
+
+  /// Adds w to the weight of key k (merging with an existing entry).
+  void add(int k, double w);
+};
+
+/// The weights of the curve point at time t. Preconditions: keyCount >= 1, times strictly
+/// increasing (callers validate). With one key, that key has weight 1.
+VTKLCT_EXPORT CurveWeights curveWeights(
+  CurveScheme scheme, const double* times, int keyCount, double t);
+
+} // namespace lct
+
+#endif
