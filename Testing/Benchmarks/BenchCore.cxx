@@ -7,6 +7,7 @@
 #include "lct/Sym3.h"
 
 #include "../Unit/RandomTransforms.h"
+#include "RecordingReporter.h"
 
 #include <Eigen/Eigenvalues>
 #include <benchmark/benchmark.h>
@@ -121,21 +122,6 @@ BENCHMARK(ExpSO3_Eigen);
 BENCHMARK(LogSO3_Ours);
 BENCHMARK(LogSO3_Eigen);
 
-/// Keeps each benchmark's time per iteration (ns) for the ratio table.
-class RecordingReporter : public benchmark::ConsoleReporter
-{
-public:
-  std::map<std::string, double> nanoseconds;
-  void ReportRuns(const std::vector<Run>& runs) override
-  {
-    for (const Run& run : runs)
-    {
-      nanoseconds[run.benchmark_name()] = run.GetAdjustedRealTime();
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
-};
-
 struct Stats
 {
   double max = 0.0;
@@ -176,12 +162,9 @@ void printAccuracy()
   }
 }
 
-void printRatios(const std::map<std::string, double>& ns)
+void printRatios(const lct_bench::RecordingReporter& reporter)
 {
-  auto get = [&](const std::string& name) {
-    auto it = ns.find(name);
-    return it == ns.end() ? 0.0 : it->second;
-  };
+  auto get = [&](const std::string& name) { return reporter.Get(name); };
   std::printf("\nSpeed against Eigen in this run (Eigen time / our time; targets: log >= 20x, exp >= 5x):\n");
   std::printf("  %-22s %10s %10s %8s %8s\n", "operation", "ours ns", "Eigen ns", "ratio", "target");
   const struct
@@ -216,9 +199,9 @@ int main(int argc, char** argv)
 {
   benchmark::Initialize(&argc, argv);
   inputs();
-  RecordingReporter reporter;
+  lct_bench::RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  printRatios(reporter.nanoseconds);
+  printRatios(reporter);
   printAccuracy();
   benchmark::Shutdown();
   return 0;

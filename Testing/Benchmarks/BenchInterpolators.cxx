@@ -1,0 +1,161 @@
+// ns per InterpolateTransform of vtkTransformInterpolatorLCT (every scheme) against VTK's
+// vtkTransformInterpolator (linear and its default spline), on the same keys and times in one
+// run, for 2, 10 and 100 keys. Prints Google Benchmark's table and the ratios.
+#include "vtkTransformInterpolatorLCT.h"
+
+#include "../Unit/RandomTransforms.h"
+#include "RecordingReporter.h"
+
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkTransform.h"
+#include "vtkTransformInterpolator.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int kQueries = 1024;
+
+/// Keys: rotation up to 120 degrees, non-uniform scale, translation; times 0 .. n-1.
+void addKeys(int n, vtkTransformInterpolatorLCT* ours, vtkTransformInterpolator* vtk)
+{
+  lct_test::RandomTransforms random(77);
+  for (int k = 0; k < n; ++k)
+  {
+    const Eigen::Vector3d s(random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0));
+    const Eigen::Matrix3d linear = random.Rotation(random.Uniform(0.0, 2.0)) * s.asDiagonal();
+    vtkNew<vtkMatrix4x4> m;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        m->SetElement(i, j, linear(i, j));
+      }
+      m->SetElement(i, 3, 10.0 * random.Normal());
+    }
+    if (ours)
+    {
+      ours->AddTransform(k, m);
+    }
+    if (vtk)
+    {
+      vtk->AddTransform(k, m);
+    }
+  }
+}
+
+/// Reads the result as a user would: a vtkTransform computes its matrix lazily, on GetMatrix(),
+/// so that cost is counted for both interpolators.
+void consume(vtkTransform* out)
+{
+  benchmark::DoNotOptimize(out->GetMatrix()->GetData()[3]);
+}
+void consume(vtkMatrix4x4* out)
+{
+  benchmark::DoNotOptimize(out->GetData()[3]);
+}
+
+std::vector<double> queries(int n)
+{
+  lct_test::RandomTransforms random(78);
+  std::vector<double> t(kQueries);
+  for (double& x : t)
+  {
+    x = random.Uniform(0.0, n - 1.0);
+  }
+  return t;
+}
+
+/// Ours, written into a vtkTransform (as VTK's) or a vtkMatrix4x4 (no vtkTransform bookkeeping:
+/// vtkTransform::SetMatrix rebuilds its concatenation, ~140 ns here).
+template <typename Output>
+void Ours(benchmark::State& state, int type)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkTransformInterpolatorLCT> interpolator;
+  interpolator->SetInterpolationType(type);
+  addKeys(n, interpolator, nullptr);
+  const std::vector<double> t = queries(n);
+  vtkNew<Output> out;
+  int i = 0;
+  for (auto _ : state)
+  {
+    interpolator->InterpolateTransform(t[i], out);
+    consume(out);
+    i = (i + 1) & (kQueries - 1);
+  }
+}
+
+void Vtk(benchmark::State& state, int type)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkTransformInterpolator> interpolator;
+  interpolator->SetInterpolationType(type);
+  addKeys(n, nullptr, interpolator);
+  const std::vector<double> t = queries(n);
+  vtkNew<vtkTransform> out;
+  interpolator->InterpolateTransform(t[0], out); // VTK initialises lazily on the first call
+  int i = 0;
+  for (auto _ : state)
+  {
+    interpolator->InterpolateTransform(t[i], out);
+    consume(out);
+    i = (i + 1) & (kQueries - 1);
+  }
+}
+
+void Ours_Linear(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_LINEAR); }
+void Ours_Spline(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
+void Ours_BSpline(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE); }
+void Ours_Subdivision(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION); }
+void Ours_Spline_ToMatrix(benchmark::State& s) { Ours<vtkMatrix4x4>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
+void Vtk_Linear(benchmark::State& s) { Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_LINEAR); }
+void Vtk_Spline(benchmark::State& s) { Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_SPLINE); }
+
+BENCHMARK(Ours_Linear)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Spline)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_BSpline)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Subdivision)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Spline_ToMatrix)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Vtk_Linear)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Vtk_Spline)->Arg(2)->Arg(10)->Arg(100);
+} // namespace
+
+int main(int argc, char** argv)
+{
+  benchmark::Initialize(&argc, argv);
+  lct_bench::RecordingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\nInterpolateTransform, ns per call, ours / VTK in this run (target <= 1.0x for Linear "
+              "and Spline):\n");
+  std::printf("  %-6s %-12s %10s %10s %8s\n", "keys", "scheme", "ours ns", "VTK ns", "ratio");
+  for (int n : { 2, 10, 100 })
+  {
+    for (const char* scheme : { "Linear", "Spline" })
+    {
+      const std::string suffix = std::string(scheme) + "/" + std::to_string(n);
+      const double ours = reporter.Get("Ours_" + suffix);
+      const double vtk = reporter.Get("Vtk_" + suffix);
+      if (ours > 0.0 && vtk > 0.0)
+      {
+        std::printf("  %-6d %-12s %10.1f %10.1f %7.2fx %s\n", n, scheme, ours, vtk, ours / vtk,
+          ours <= vtk ? "met" : "MISSED");
+      }
+    }
+    for (const char* scheme : { "BSpline", "Subdivision" })
+    {
+      const double ours = reporter.Get(std::string("Ours_") + scheme + "/" + std::to_string(n));
+      if (ours > 0.0)
+      {
+        std::printf("  %-6d %-12s %10.1f %10s\n", n, scheme, ours, "-");
+      }
+    }
+  }
+  benchmark::Shutdown();
+  return 0;
+}
