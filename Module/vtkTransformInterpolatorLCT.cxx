@@ -28,6 +28,69 @@ struct Key
 {
   double Time;
   Eigen::Matrix4d Matrix;
+  /// Bezier control transforms before and after the key, when the user gave them.
+  bool HasIncoming = false;
+  bool HasOutgoing = false;
+  Eigen::Matrix4d Incoming;
+  Eigen::Matrix4d Outgoing;
+};
+
+/// The logs of a sequence of transforms, for combinations of up to kReach neighbours.
+struct LogCache
+{
+  std::vector<Eigen::Matrix4d> Matrices;
+  /// Relative[r * (2 kReach + 1) + (i - r + kReach)] = log(M_i M_r^-1), |i - r| <= kReach,
+  /// where it exists (RelativeValid).
+  std::vector<lct::LogCoords> Relative;
+  std::vector<char> RelativeValid;
+  /// Absolute logs, each on the rotation branch nearest to the previous one's.
+  std::vector<lct::LogCoords> Absolute;
+
+  /// Fills the cache for `matrices`. Fails (cache unchanged) when a matrix has no log, or, if
+  /// `neighboursMustCombine`, when two neighbours have no log between them; `failed` is then
+  /// the index of the offending matrix.
+  lct::Status Build(std::vector<Eigen::Matrix4d> matrices, lct::Parametrisation p,
+    bool neighboursMustCombine, int& failed)
+  {
+    const int n = static_cast<int>(matrices.size());
+    std::vector<lct::LogCoords> relative(static_cast<size_t>(n) * (2 * kReach + 1));
+    std::vector<char> valid(relative.size(), 0);
+    std::vector<lct::LogCoords> absolute(n);
+    for (int r = 0; r < n; ++r)
+    {
+      const auto a = lct::logarithm(matrices[r], p, r > 0 ? &absolute[r - 1] : nullptr);
+      if (!a)
+      {
+        failed = r;
+        return a.status;
+      }
+      absolute[r] = a.value;
+      const Eigen::Matrix4d inverse = lct::inverseAffine(matrices[r]);
+      for (int i = std::max(0, r - kReach); i <= std::min(n - 1, r + kReach); ++i)
+      {
+        const auto l = lct::logarithm(matrices[i] * inverse, p);
+        if (!l)
+        {
+          // MatrixLog only: a step without real log. Fatal between neighbours when asked (no
+          // curve could join them); otherwise it only matters if a curve point combines the
+          // two, which Evaluate reports.
+          if (neighboursMustCombine && std::abs(i - r) <= 1)
+          {
+            failed = std::max(i, r);
+            return l.status;
+          }
+          continue;
+        }
+        relative[r * (2 * kReach + 1) + (i - r + kReach)] = l.value;
+        valid[r * (2 * kReach + 1) + (i - r + kReach)] = 1;
+      }
+    }
+    this->Matrices.swap(matrices);
+    this->Relative.swap(relative);
+    this->RelativeValid.swap(valid);
+    this->Absolute.swap(absolute);
+    return lct::Status::Ok;
+  }
 };
 
 lct::Parametrisation toCore(int parametrisation)
@@ -47,9 +110,90 @@ lct::CurveScheme toScheme(int type)
       return lct::CurveScheme::BSpline;
     case vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION:
       return lct::CurveScheme::Subdivision;
+    case vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER:
+      return lct::CurveScheme::Bezier;
     default:
       return lct::CurveScheme::CatmullRom;
   }
+}
+} // namespace
+
+namespace
+{
+/// exp(sum_j w_j log(M_j M_r^-1)) M_r, from the cache.
+lct::Status combineAbout(const LogCache& logs, const lct::CurveWeights& w, int r,
+  lct::Parametrisation p, Eigen::Matrix4d& out)
+{
+  lct::LogCoords sum = lct::LogCoords::Zero();
+  for (int j = 0; j < w.count; ++j)
+  {
+    const size_t slot = r * (2 * kReach + 1) + (w.key[j] - r + kReach);
+    if (!logs.RelativeValid[slot])
+    {
+      return lct::Status::NoRealLogarithm;
+    }
+    sum += w.weight[j] * logs.Relative[slot];
+  }
+  const auto m = lct::exponential(sum, p);
+  if (m)
+  {
+    out = m.value * logs.Matrices[r];
+  }
+  return m.status;
+}
+
+/// Width of the hand-over between two reference points, in weight difference.
+constexpr double kHandOver = 0.2;
+
+/**
+ * The relative form (Hawkins & Grimm eq. 7) about the point of largest weight. The result
+ * depends on the reference (only the matrix log of two keys is reference-free), so switching
+ * references where two weights cross would make the curve jump. Where the two largest weights
+ * are within kHandOver of each other, the results about both are blended along the MatrixLog
+ * geodesic between them (they are close, so its log exists), with a smoothstep of the weight
+ * gap that reaches the symmetric midpoint when the weights are equal: the curve stays C1.
+ */
+lct::Status combineRelative(const LogCache& logs, const lct::CurveWeights& w,
+  lct::Parametrisation p, Eigen::Matrix4d& out)
+{
+  int a = -1;
+  int b = -1;
+  for (int j = 0; j < w.count; ++j)
+  {
+    if (a < 0 || w.weight[j] > w.weight[a])
+    {
+      b = a;
+      a = j;
+    }
+    else if (b < 0 || w.weight[j] > w.weight[b])
+    {
+      b = j;
+    }
+  }
+  const lct::Status status = combineAbout(logs, w, w.key[a], p, out);
+  const double gap = b < 0 ? kHandOver : w.weight[a] - w.weight[b];
+  if (status != lct::Status::Ok || gap >= kHandOver)
+  {
+    return status;
+  }
+  Eigen::Matrix4d other;
+  if (combineAbout(logs, w, w.key[b], p, other) != lct::Status::Ok)
+  {
+    return status; // no result about b: keep the one about a
+  }
+  const auto step = lct::logarithm(other * lct::inverseAffine(out), lct::Parametrisation::MatrixLog);
+  if (!step)
+  {
+    return status;
+  }
+  const double x = gap / kHandOver;
+  const double s = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
+  const auto blend = lct::exponential(s * step.value, lct::Parametrisation::MatrixLog);
+  if (blend)
+  {
+    out = blend.value * out;
+  }
+  return status;
 }
 } // namespace
 
@@ -58,54 +202,102 @@ struct vtkTransformInterpolatorLCT::Internals
 {
   std::vector<Key> Keys;
   std::vector<double> Times;
-  /// Relative[r * (2 kReach + 1) + (i - r + kReach)] = log(K_i K_r^-1), |i - r| <= kReach,
-  /// where it exists (RelativeValid); neighbouring keys always have one.
-  std::vector<lct::LogCoords> Relative;
-  std::vector<char> RelativeValid;
-  /// Absolute logs, each on the rotation branch nearest to the previous key's.
-  std::vector<lct::LogCoords> Absolute;
+  /// Logs of the keys (Linear, Spline, BSpline, Subdivision).
+  LogCache KeyLogs;
+  /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), and why they are
+  /// missing if they are (MatrixLog: a control transform without a real log). That only
+  /// matters to the Bezier type, so it does not stop keys from being added.
+  LogCache BezierLogs;
+  lct::Status BezierStatus = lct::Status::Ok;
+  double BezierFailedTime = 0.0;
 
-  /// Computes every log for `keys` in parametrisation p; on failure reports the key index.
-  lct::Status Build(const std::vector<Key>& keys, lct::Parametrisation p, int& failedKey)
+  /// The Bezier sequence: given control transforms, else automatic ones that put the
+  /// Catmull-Rom tangent at each key, taken relative to the key (so C- K C+ are collinear in the
+  /// key's frame): C+ = exp(+h/3 m) K, C- = exp(-h/3 m) K with h the segment's duration.
+  static lct::Status BezierSequence(const std::vector<Key>& keys, const LogCache& keyLogs,
+    lct::Parametrisation p, std::vector<Eigen::Matrix4d>& out)
   {
     const int n = static_cast<int>(keys.size());
-    std::vector<lct::LogCoords> relative(static_cast<size_t>(n) * (2 * kReach + 1));
-    std::vector<char> valid(relative.size(), 0);
-    std::vector<lct::LogCoords> absolute(n);
-    for (int r = 0; r < n; ++r)
+    out.clear();
+    auto tangent = [&](int k) -> lct::LogCoords {
+      const int lo = std::max(k - 1, 0);
+      const int hi = std::min(k + 1, n - 1);
+      const auto& rel = keyLogs.Relative;
+      const int base = k * (2 * kReach + 1) + kReach;
+      return (rel[base + (hi - k)] - rel[base + (lo - k)]) / (keys[hi].Time - keys[lo].Time);
+    };
+    for (int k = 0; k < n; ++k)
     {
-      const auto a = lct::logarithm(keys[r].Matrix, p, r > 0 ? &absolute[r - 1] : nullptr);
-      if (!a)
+      if (k > 0)
       {
-        failedKey = r;
-        return a.status;
-      }
-      absolute[r] = a.value;
-      const Eigen::Matrix4d inverse = lct::inverseAffine(keys[r].Matrix);
-      for (int i = std::max(0, r - kReach); i <= std::min(n - 1, r + kReach); ++i)
-      {
-        const auto l = lct::logarithm(keys[i].Matrix * inverse, p);
-        if (!l)
+        if (keys[k].HasIncoming)
         {
-          // MatrixLog only: a step without real log. Fatal between neighbours (no curve can
-          // join them); farther apart it only matters if a curve point combines the two.
-          if (std::abs(i - r) <= 1)
-          {
-            failedKey = std::max(i, r);
-            return l.status;
-          }
-          continue;
+          out.push_back(keys[k].Incoming);
         }
-        relative[r * (2 * kReach + 1) + (i - r + kReach)] = l.value;
-        valid[r * (2 * kReach + 1) + (i - r + kReach)] = 1;
+        else
+        {
+          const double h = keys[k].Time - keys[k - 1].Time;
+          const auto c = lct::exponential(-h / 3.0 * tangent(k), p);
+          if (!c)
+          {
+            return c.status;
+          }
+          out.push_back(c.value * keys[k].Matrix);
+        }
+      }
+      out.push_back(keys[k].Matrix);
+      if (k + 1 < n)
+      {
+        if (keys[k].HasOutgoing)
+        {
+          out.push_back(keys[k].Outgoing);
+        }
+        else
+        {
+          const double h = keys[k + 1].Time - keys[k].Time;
+          const auto c = lct::exponential(h / 3.0 * tangent(k), p);
+          if (!c)
+          {
+            return c.status;
+          }
+          out.push_back(c.value * keys[k].Matrix);
+        }
       }
     }
+    return lct::Status::Ok;
+  }
+
+  /// Computes every log for `keys` in parametrisation p and, on success, makes them current.
+  /// On failure nothing changes and `failedTime` is the time of the offending key.
+  lct::Status Build(const std::vector<Key>& keys, lct::Parametrisation p, double& failedTime)
+  {
+    std::vector<Eigen::Matrix4d> matrices;
+    for (const Key& k : keys)
+    {
+      matrices.push_back(k.Matrix);
+    }
+    LogCache keyLogs;
+    int failed = -1;
+    lct::Status status = keyLogs.Build(matrices, p, true, failed);
+    if (status != lct::Status::Ok)
+    {
+      failedTime = keys[failed].Time;
+      return status;
+    }
+    std::vector<Eigen::Matrix4d> sequence;
+    LogCache bezierLogs;
+    failed = 0;
+    this->BezierStatus = BezierSequence(keys, keyLogs, p, sequence);
+    if (this->BezierStatus == lct::Status::Ok)
+    {
+      this->BezierStatus = bezierLogs.Build(sequence, p, false, failed);
+    }
+    this->BezierFailedTime = keys.empty() ? 0.0 : keys[std::min<int>((failed + 1) / 3, static_cast<int>(keys.size()) - 1)].Time;
     this->Keys = keys;
-    this->Relative.swap(relative);
-    this->RelativeValid.swap(valid);
-    this->Absolute.swap(absolute);
-    this->Times.resize(n);
-    for (int i = 0; i < n; ++i)
+    this->KeyLogs = std::move(keyLogs);
+    this->BezierLogs = std::move(bezierLogs);
+    this->Times.resize(keys.size());
+    for (size_t i = 0; i < keys.size(); ++i)
     {
       this->Times[i] = keys[i].Time;
     }
@@ -146,7 +338,7 @@ double vtkTransformInterpolatorLCT::GetMaximumT()
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::Initialize()
 {
-  int unused;
+  double unused;
   this->Internal->Build({}, toCore(this->Parametrisation), unused);
   this->Modified();
 }
@@ -178,12 +370,12 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
   {
     keys.insert(at, key);
   }
-  int failedKey = -1;
-  const lct::Status built = this->Internal->Build(keys, toCore(this->Parametrisation), failedKey);
+  double failedTime = t;
+  const lct::Status built = this->Internal->Build(keys, toCore(this->Parametrisation), failedTime);
   if (built != lct::Status::Ok)
   {
-    vtkErrorMacro(<< caller << " at t = " << t << ": the step to the key at t = "
-                  << keys[failedKey].Time << " has no " << lct::name(toCore(this->Parametrisation))
+    vtkErrorMacro(<< caller << " at t = " << t << ": the key at t = " << failedTime
+                  << " (or the step to it) has no " << lct::name(toCore(this->Parametrisation))
                   << " logarithm (" << lct::describe(built) << "); key rejected.");
     return 0;
   }
@@ -225,6 +417,50 @@ int vtkTransformInterpolatorLCT::AddTransform(double t, vtkProp3D* prop3D)
 }
 
 //------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetBezierControls(
+  double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing)
+{
+  std::vector<Key> keys = this->Internal->Keys;
+  auto key = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
+  if (key == keys.end())
+  {
+    vtkErrorMacro(<< "SetBezierControls: no key at t = " << t << "; unchanged.");
+    return 0;
+  }
+  vtkMatrix4x4* given[2] = { incoming, outgoing };
+  for (vtkMatrix4x4* m : given)
+  {
+    const lct::Status valid = m ? lct::validateAffine(RowMajor4(Eigen::Map<const RowMajor4>(m->GetData())))
+                                : lct::Status::Ok;
+    if (valid != lct::Status::Ok)
+    {
+      vtkErrorMacro(<< "SetBezierControls(t = " << t << "): " << lct::describe(valid)
+                    << "; unchanged.");
+      return 0;
+    }
+  }
+  key->HasIncoming = incoming != nullptr;
+  key->HasOutgoing = outgoing != nullptr;
+  if (incoming)
+  {
+    key->Incoming = RowMajor4(Eigen::Map<const RowMajor4>(incoming->GetData()));
+  }
+  if (outgoing)
+  {
+    key->Outgoing = RowMajor4(Eigen::Map<const RowMajor4>(outgoing->GetData()));
+  }
+  double failedTime = t;
+  if (this->Internal->Build(keys, toCore(this->Parametrisation), failedTime) != lct::Status::Ok)
+  {
+    vtkErrorMacro(<< "SetBezierControls(t = " << t << "): the keys no longer have logarithms; "
+                  << "unchanged.");
+    return 0;
+  }
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::RemoveTransform(double t)
 {
   std::vector<Key> keys = this->Internal->Keys;
@@ -235,7 +471,7 @@ void vtkTransformInterpolatorLCT::RemoveTransform(double t)
     return;
   }
   keys.erase(end, keys.end());
-  int unused;
+  double unused;
   // Removing a key cannot create a missing log in Polar; in MatrixLog it can bring keys
   // farther apart into one curve point, so check.
   if (this->Internal->Build(keys, toCore(this->Parametrisation), unused) != lct::Status::Ok)
@@ -260,12 +496,12 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
   {
     return 1;
   }
-  int failedKey = -1;
+  double failedTime = 0.0;
   const std::vector<Key> keys = this->Internal->Keys;
-  const lct::Status built = this->Internal->Build(keys, toCore(parametrisation), failedKey);
+  const lct::Status built = this->Internal->Build(keys, toCore(parametrisation), failedTime);
   if (built != lct::Status::Ok)
   {
-    vtkErrorMacro(<< "SetParametrisation: the key at t = " << keys[failedKey].Time << " has no "
+    vtkErrorMacro(<< "SetParametrisation: the key at t = " << failedTime << " has no "
                   << lct::name(toCore(parametrisation)) << " logarithm ("
                   << lct::describe(built) << "); unchanged.");
     return 0;
@@ -290,57 +526,44 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
     vtkErrorMacro(<< "InterpolateTransform: t is NaN; output unchanged.");
     return false;
   }
-  const lct::CurveWeights w =
-    lct::curveWeights(toScheme(this->InterpolationType), in.Times.data(), n, t);
+  const lct::CurveScheme scheme = toScheme(this->InterpolationType);
+  if (scheme == lct::CurveScheme::Bezier && in.BezierStatus != lct::Status::Ok)
+  {
+    vtkErrorMacro(<< "InterpolateTransform(" << t << "): the Bezier control transforms near the "
+                  << "key at t = " << in.BezierFailedTime << " have no "
+                  << lct::name(toCore(this->Parametrisation)) << " logarithm ("
+                  << lct::describe(in.BezierStatus) << "); output unchanged.");
+    return false;
+  }
+  const LogCache& logs = scheme == lct::CurveScheme::Bezier ? in.BezierLogs : in.KeyLogs;
+  const lct::CurveWeights w = lct::curveWeights(scheme, in.Times.data(), n, t);
   const lct::Parametrisation p = toCore(this->Parametrisation);
-  lct::LogCoords sum = lct::LogCoords::Zero();
   Eigen::Matrix4d result;
+  lct::Status status;
   if (this->ConsistentRotation)
   {
+    lct::LogCoords sum = lct::LogCoords::Zero();
     for (int j = 0; j < w.count; ++j)
     {
-      sum += w.weight[j] * in.Absolute[w.key[j]];
+      sum += w.weight[j] * logs.Absolute[w.key[j]];
     }
     const auto m = lct::exponential(sum, p);
-    if (!m)
-    {
-      vtkErrorMacro(<< "InterpolateTransform(" << t << "): " << lct::describe(m.status));
-      return false;
-    }
+    status = m.status;
     result = m.value;
   }
   else
   {
-    int r = w.key[0];
-    double largest = w.weight[0];
-    for (int j = 1; j < w.count; ++j)
-    {
-      if (w.weight[j] > largest)
-      {
-        largest = w.weight[j];
-        r = w.key[j];
-      }
-    }
-    for (int j = 0; j < w.count; ++j)
-    {
-      const size_t slot = r * (2 * kReach + 1) + (w.key[j] - r + kReach);
-      if (!in.RelativeValid[slot])
-      {
-        vtkErrorMacro(<< "InterpolateTransform(" << t << "): the keys at t = " << in.Times[r]
-                      << " and t = " << in.Times[w.key[j]] << " have no real "
-                      << "MatrixLog logarithm between them; use the Polar parametrisation. "
-                         "Output unchanged.");
-        return false;
-      }
-      sum += w.weight[j] * in.Relative[slot];
-    }
-    const auto m = lct::exponential(sum, p);
-    if (!m)
-    {
-      vtkErrorMacro(<< "InterpolateTransform(" << t << "): " << lct::describe(m.status));
-      return false;
-    }
-    result = m.value * in.Keys[r].Matrix;
+    status = combineRelative(logs, w, p, result);
+  }
+  if (status != lct::Status::Ok)
+  {
+    vtkErrorMacro(<< "InterpolateTransform(" << t << "): "
+                  << (status == lct::Status::NoRealLogarithm
+                         ? "two transforms combined here have no real MatrixLog logarithm "
+                           "between them; use the Polar parametrisation"
+                         : lct::describe(status))
+                  << ". Output unchanged.");
+    return false;
   }
   Eigen::Map<RowMajor4> output(out);
   output = result;
@@ -386,7 +609,7 @@ int vtkTransformInterpolatorLCT::InterpolateTransform(double t, vtkLogTransform*
 void vtkTransformInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const types[] = { "Linear", "Spline", "BSpline", "Subdivision" };
+  static const char* const types[] = { "Linear", "Spline", "BSpline", "Subdivision", "Bezier" };
   os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
   os << indent << "Parametrisation: " << lct::name(toCore(this->Parametrisation)) << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";

@@ -9,11 +9,16 @@
  * whole matrix: every output is exp(sum_i w_i log(K_i K_r^-1)) K_r, one weighted sum and one exp,
  * with the weights w_i of the chosen curve scheme and K_r the key of largest weight (the relative
  * form of Hawkins & Grimm eq. 7, so rotations between neighbouring keys take the short way and
- * both logarithms stay near the identity, where they are best conditioned).
+ * both logarithms stay near the identity, where they are best conditioned). The result depends
+ * on the reference key, so where the two largest weights cross, the results about both are
+ * blended along the short geodesic between them (a smoothstep over a weight gap of 0.2): the
+ * curve has no jump there and stays C1.
  *
  * Interpolation types: Linear, Spline (interpolating C1 Catmull-Rom on the key times, VTK's
  * default), BSpline (approximating cubic, through the end keys), Subdivision (the 4-point
- * interpolating scheme, Hawkins & Grimm §3.3.2). See lct/Curves.h for the exact definitions.
+ * interpolating scheme, Hawkins & Grimm §3.3.2) and Bezier (cubic segments whose tangents are
+ * given by control transforms, Alexa §6.1; see SetBezierControls). See lct/Curves.h for the
+ * exact definitions.
  *
  * Parametrisation: Polar (default; every key with det > 0 works, rigid keys give rigid
  * in-betweens) or MatrixLog (Alexa; keys or key-to-key steps without a real logarithm are
@@ -104,14 +109,15 @@ public:
     INTERPOLATION_TYPE_LINEAR = 0,
     INTERPOLATION_TYPE_SPLINE = 1,
     INTERPOLATION_TYPE_BSPLINE = 2,
-    INTERPOLATION_TYPE_SUBDIVISION = 3
+    INTERPOLATION_TYPE_SUBDIVISION = 3,
+    INTERPOLATION_TYPE_BEZIER = 4
   };
 
   ///@{
   /**
    * The curve scheme. Default: Spline, as vtkTransformInterpolator.
    */
-  vtkSetClampMacro(InterpolationType, int, INTERPOLATION_TYPE_LINEAR, INTERPOLATION_TYPE_SUBDIVISION);
+  vtkSetClampMacro(InterpolationType, int, INTERPOLATION_TYPE_LINEAR, INTERPOLATION_TYPE_BEZIER);
   vtkGetMacro(InterpolationType, int);
   void SetInterpolationTypeToLinear() { this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR); }
   void SetInterpolationTypeToSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE); }
@@ -120,7 +126,19 @@ public:
   {
     this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
   }
+  void SetInterpolationTypeToBezier() { this->SetInterpolationType(INTERPOLATION_TYPE_BEZIER); }
   ///@}
+
+  /**
+   * Bezier tangents (Alexa §6.1): the control transforms just before (`incoming`) and just after
+   * (`outgoing`) the key at time t; the curve leaves the key towards `outgoing` and arrives from
+   * `incoming`, like the inner control points of a cubic Bezier segment. Either may be null: that
+   * side gets the automatic control exp(+-h/3 m) K, with m the Catmull-Rom tangent of the logs
+   * relative to the key and h the segment's duration, so without controls Bezier follows the
+   * Spline type closely. Controls are kept until the key is replaced or removed. Returns 0 (with
+   * an error, unchanged) when there is no key at t or a control is not a valid affine map.
+   */
+  int SetBezierControls(double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing);
 
   enum ParametrisationTypes
   {

@@ -210,6 +210,15 @@ CurveWeights curveWeights(CurveScheme scheme, const double* times, int keyCount,
     case CurveScheme::Subdivision:
       subdivision(out, keyCount, i, u);
       break;
+    case CurveScheme::Bezier:
+    {
+      const double v = 1.0 - u;
+      out.add(3 * i, v * v * v);
+      out.add(3 * i + 1, 3.0 * v * v * u);
+      out.add(3 * i + 2, 3.0 * v * u * u);
+      out.add(3 * i + 3, u * u * u);
+      break;
+    }
   }
   return out;
 }

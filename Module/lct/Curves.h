@@ -16,6 +16,11 @@
  *   Deslauriers-Dubuc fundamental function (support [-3, 3]) over the key index, sampled once
  *   at 2^-10 and interpolated by C1 cubic Hermite pieces; interpolating and C1. Boundary keys by the corrected
  *   reflection log M[-1] = 2 log M[0] - log M[1] (SEEDS.md erratum to Hawkins & Grimm eq. 11).
+ * - Bezier: Alexa §6.1, cubic Bezier segments whose tangents are given by control transforms.
+ *   Its weights refer to the sequence of 3 (n - 1) + 1 points K0, C0+, C1-, K1, C1+, C2-, K2, ...
+ *   (key i is point 3 i; C_i+ and C_(i+1)- are the control points of segment i), with the
+ *   Bernstein weights of u on segment i. Interpolating; C1 where C_i- , K_i, C_i+ are collinear
+ *   in log space with proportional spacing.
  * BSpline and Subdivision map time to the key index piecewise-linearly, so with non-uniform key
  * times they are C1 in the index and C0 in time at the keys.
  */
@@ -34,7 +39,8 @@ enum class CurveScheme
   Linear,
   CatmullRom,
   BSpline,
-  Subdivision
+  Subdivision,
+  Bezier
 };
 
 /// A sparse weight vector over keys (at most 8 keys carry weight at any t).
@@ -50,7 +56,8 @@ struct CurveWeights
 };
 
 /// The weights of the curve point at time t. Preconditions: keyCount >= 1, times strictly
-/// increasing (callers validate). With one key, that key has weight 1.
+/// increasing (callers validate). With one key, that key has weight 1. For Bezier the weights
+/// index the key-and-control sequence described above, not the keys.
 VTKLCT_EXPORT CurveWeights curveWeights(
   CurveScheme scheme, const double* times, int keyCount, double t);
 

@@ -6,6 +6,7 @@
 #include "lct/SO3.h"
 
 #include "RandomTransforms.h"
+#include "VtkTestHelpers.h"
 
 #include "vtkCollection.h"
 #include "vtkCommand.h"
@@ -21,43 +22,9 @@
 
 namespace
 {
-/// Counts ErrorEvents and keeps the last message, so tests can check errors are reported.
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    this->Last = data ? static_cast<const char*>(data) : "";
-  }
-  int Count = 0;
-  std::string Last;
-};
-
-void toVtk(const Eigen::Matrix4d& m, vtkMatrix4x4* out)
-{
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      out->SetElement(i, j, m(i, j));
-    }
-  }
-}
-
-Eigen::Matrix4d fromVtk(vtkMatrix4x4* m)
-{
-  Eigen::Matrix4d out;
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      out(i, j) = m->GetElement(i, j);
-    }
-  }
-  return out;
-}
+using lct_test::ErrorCounter;
+using lct_test::fromVtk;
+using lct_test::toVtk;
 
 Eigen::Matrix4d randomAffine(int seed)
 {
