@@ -2,6 +2,7 @@
 
 #include "lct/Affine.h"
 #include "lct/Curves.h"
+#include "lct/MatrixLogParametrisation.h"
 #include "lct/Parametrisation.h"
 
 #include "vtkLogTransform.h"
@@ -143,7 +144,7 @@ lct::Status combineAbout(const LogCache& logs, const lct::CurveWeights& w, int r
 }
 
 /// Width of the hand-over between two reference points, in weight difference.
-constexpr double kHandOver = 0.2;
+constexpr double kHandOver = 0.1;
 
 /**
  * The relative form (Hawkins & Grimm eq. 7) about the point of largest weight. The result
@@ -181,14 +182,10 @@ lct::Status combineRelative(const LogCache& logs, const lct::CurveWeights& w,
   {
     return status; // no result about b: keep the one about a
   }
-  const auto step = lct::logarithm(other * lct::inverseAffine(out), lct::Parametrisation::MatrixLog);
-  if (!step)
-  {
-    return status;
-  }
   const double x = gap / kHandOver;
   const double s = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
-  const auto blend = lct::exponential(s * step.value, lct::Parametrisation::MatrixLog);
+  // (R_b R_a^-1)^s R_a: at s = 1/2 the same point from either side.
+  const auto blend = lct::matrixPower(other * lct::inverseAffine(out), s);
   if (blend)
   {
     out = blend.value * out;

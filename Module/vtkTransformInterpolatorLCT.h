@@ -11,7 +11,7 @@
  * form of Hawkins & Grimm eq. 7, so rotations between neighbouring keys take the short way and
  * both logarithms stay near the identity, where they are best conditioned). The result depends
  * on the reference key, so where the two largest weights cross, the results about both are
- * blended along the short geodesic between them (a smoothstep over a weight gap of 0.2): the
+ * blended along the short geodesic between them (a smoothstep over a weight gap of 0.1): the
  * curve has no jump there and stays C1.
  *
  * Interpolation types: Linear, Spline (interpolating C1 Catmull-Rom on the key times, VTK's

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lct
 {
@@ -122,6 +123,56 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
     return R::failure(Status::NonFinite);
   }
   return out;
+}
+
+Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s)
+{
+  using R = Result<Eigen::Matrix4d>;
+  const Status valid = validateAffine(m);
+  if (valid != Status::Ok)
+  {
+    return R::failure(valid);
+  }
+  if (!std::isfinite(s))
+  {
+    return R::failure(Status::NonFinite);
+  }
+  Eigen::Matrix4d e = m;
+  e.diagonal().array() -= 1.0;
+  const double norm = e.norm();
+  if (norm >= 0.25)
+  {
+    const auto l = matrixLog(m);
+    if (!l)
+    {
+      return R::failure(l.status);
+    }
+    return matrixExp(s * l.value);
+  }
+  // (I + E)^s = sum_k binom(s, k) E^k; |binom(s, k)| <= max(1, |s|)^k-ish and ||E^k|| <= 1/4^k.
+  // E has a zero bottom row, so only the top 3x4 block of the powers is formed.
+  Eigen::Matrix<double, 3, 4> power = e.topRows<3>();
+  Eigen::Matrix<double, 3, 4> sum = s * power;
+  double coefficient = s;
+  constexpr int kMaxTerms = 200;
+  for (int k = 2; k <= kMaxTerms; ++k)
+  {
+    // E^k = E^(k-1) E, with E's bottom row zero: [P q] [A t; 0 0] = [P A, P t].
+    Eigen::Matrix<double, 3, 4> next;
+    next.leftCols<3>() = power.leftCols<3>() * e.topLeftCorner<3, 3>();
+    next.col(3) = power.leftCols<3>() * e.topRightCorner<3, 1>();
+    power = next;
+    coefficient *= (s - (k - 1)) / k;
+    const Eigen::Matrix<double, 3, 4> term = coefficient * power;
+    sum += term;
+    if (term.norm() <= 0.25 * std::numeric_limits<double>::epsilon() * (1.0 + sum.norm()))
+    {
+      break;
+    }
+  }
+  Eigen::Matrix4d out = Eigen::Matrix4d::Identity();
+  out.topRows<3>() += sum;
+  return { out, Status::Ok };
 }
 
 Result<LogCoords> matrixLog(const Eigen::Matrix4d& m)

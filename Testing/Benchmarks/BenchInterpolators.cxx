@@ -21,22 +21,19 @@ namespace
 {
 constexpr int kQueries = 1024;
 
-/// Keys: rotation up to 120 degrees, non-uniform scale, translation; times 0 .. n-1.
+/// Keys of a keyframed animation: a random walk where each key is the previous one times a step
+/// of up to 30 degrees of rotation, up to 15 % of non-uniform scale change and a unit-size
+/// translation; times 0 .. n-1.
 void addKeys(int n, vtkTransformInterpolatorLCT* ours, vtkTransformInterpolator* vtk)
 {
   lct_test::RandomTransforms random(77);
+  Eigen::Matrix4d key = Eigen::Matrix4d::Identity();
   for (int k = 0; k < n; ++k)
   {
-    const Eigen::Vector3d s(random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0));
-    const Eigen::Matrix3d linear = random.Rotation(random.Uniform(0.0, 2.0)) * s.asDiagonal();
     vtkNew<vtkMatrix4x4> m;
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 16; ++i)
     {
-      for (int j = 0; j < 3; ++j)
-      {
-        m->SetElement(i, j, linear(i, j));
-      }
-      m->SetElement(i, 3, 10.0 * random.Normal());
+      m->SetElement(i / 4, i % 4, key(i / 4, i % 4));
     }
     if (ours)
     {
@@ -46,6 +43,11 @@ void addKeys(int n, vtkTransformInterpolatorLCT* ours, vtkTransformInterpolator*
     {
       vtk->AddTransform(k, m);
     }
+    const Eigen::Vector3d s(random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15));
+    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
+    step.topLeftCorner<3, 3>() = random.Rotation(random.Uniform(0.0, 0.52)) * s.asDiagonal();
+    step.topRightCorner<3, 1>() = random.Translation(lct_test::TransformClass::Rigid) / 10.0;
+    key = step * key;
   }
 }
 

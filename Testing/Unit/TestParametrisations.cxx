@@ -469,3 +469,26 @@ TEST(Combination, WeightedSumAndLerp)
   EXPECT_EQ(lct::weightedSum(w, c, 2), lct::lerp(a, b, 0.75));
   EXPECT_EQ(lct::largestWeight(w, 2), 1u);
 }
+
+TEST(MatrixLog, PowerMatchesExpOfScaledLogNearAndFarFromIdentity)
+{
+  lct_test::RandomTransforms random(1000);
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    // Half of them near the identity (the binomial series), half generic.
+    Eigen::Matrix4d m = (i % 2) ? random.Affine(TransformClass::GeneralAffine)
+                                : lct::matrixExp(0.05 * lct::matrixLog(random.Affine(TransformClass::Similarity)).value).value;
+    if (nearNegativeRealAxis(m, std::sqrt(0.5)))
+    {
+      continue;
+    }
+    const double s = random.Uniform(-1.5, 1.5);
+    const auto power = lct::matrixPower(m, s);
+    const auto reference = lct::matrixExp(s * lct::matrixLog(m).value);
+    ASSERT_TRUE(power.ok() && reference.ok());
+    worst = std::max(worst, lct_test::blockError(power.value, reference.value));
+  }
+  EXPECT_LT(worst, 1e-13);
+  EXPECT_EQ(lct::matrixPower(Eigen::Matrix4d::Identity(), std::nan("")).status, lct::Status::NonFinite);
+}
