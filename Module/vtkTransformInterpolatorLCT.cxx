@@ -2,7 +2,7 @@
 
 #include "lct/Affine.h"
 #include "lct/Curves.h"
-#include "lct/MatrixLogParametrisation.h"
+#include "lct/KeyLogs.h"
 #include "lct/Parametrisation.h"
 
 #include "vtkLogTransform.h"
@@ -21,10 +21,6 @@ namespace
 {
 using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
 
-/// Keys farther apart than this never share a curve point (the widest scheme, subdivision,
-/// touches 6 neighbouring keys plus the folded end keys), so only these relative logs are kept.
-constexpr int kReach = 7;
-
 struct Key
 {
   double Time;
@@ -34,64 +30,6 @@ struct Key
   bool HasOutgoing = false;
   Eigen::Matrix4d Incoming;
   Eigen::Matrix4d Outgoing;
-};
-
-/// The logs of a sequence of transforms, for combinations of up to kReach neighbours.
-struct LogCache
-{
-  std::vector<Eigen::Matrix4d> Matrices;
-  /// Relative[r * (2 kReach + 1) + (i - r + kReach)] = log(M_i M_r^-1), |i - r| <= kReach,
-  /// where it exists (RelativeValid).
-  std::vector<lct::LogCoords> Relative;
-  std::vector<char> RelativeValid;
-  /// Absolute logs, each on the rotation branch nearest to the previous one's.
-  std::vector<lct::LogCoords> Absolute;
-
-  /// Fills the cache for `matrices`. Fails (cache unchanged) when a matrix has no log, or, if
-  /// `neighboursMustCombine`, when two neighbours have no log between them; `failed` is then
-  /// the index of the offending matrix.
-  lct::Status Build(std::vector<Eigen::Matrix4d> matrices, lct::Parametrisation p,
-    bool neighboursMustCombine, int& failed)
-  {
-    const int n = static_cast<int>(matrices.size());
-    std::vector<lct::LogCoords> relative(static_cast<size_t>(n) * (2 * kReach + 1));
-    std::vector<char> valid(relative.size(), 0);
-    std::vector<lct::LogCoords> absolute(n);
-    for (int r = 0; r < n; ++r)
-    {
-      const auto a = lct::logarithm(matrices[r], p, r > 0 ? &absolute[r - 1] : nullptr);
-      if (!a)
-      {
-        failed = r;
-        return a.status;
-      }
-      absolute[r] = a.value;
-      const Eigen::Matrix4d inverse = lct::inverseAffine(matrices[r]);
-      for (int i = std::max(0, r - kReach); i <= std::min(n - 1, r + kReach); ++i)
-      {
-        const auto l = lct::logarithm(matrices[i] * inverse, p);
-        if (!l)
-        {
-          // MatrixLog only: a step without real log. Fatal between neighbours when asked (no
-          // curve could join them); otherwise it only matters if a curve point combines the
-          // two, which Evaluate reports.
-          if (neighboursMustCombine && std::abs(i - r) <= 1)
-          {
-            failed = std::max(i, r);
-            return l.status;
-          }
-          continue;
-        }
-        relative[r * (2 * kReach + 1) + (i - r + kReach)] = l.value;
-        valid[r * (2 * kReach + 1) + (i - r + kReach)] = 1;
-      }
-    }
-    this->Matrices.swap(matrices);
-    this->Relative.swap(relative);
-    this->RelativeValid.swap(valid);
-    this->Absolute.swap(absolute);
-    return lct::Status::Ok;
-  }
 };
 
 lct::Parametrisation toCore(int parametrisation)
@@ -119,109 +57,34 @@ lct::CurveScheme toScheme(int type)
 }
 } // namespace
 
-namespace
-{
-/// exp(sum_j w_j log(M_j M_r^-1)) M_r, from the cache.
-lct::Status combineAbout(const LogCache& logs, const lct::CurveWeights& w, int r,
-  lct::Parametrisation p, Eigen::Matrix4d& out)
-{
-  lct::LogCoords sum = lct::LogCoords::Zero();
-  for (int j = 0; j < w.count; ++j)
-  {
-    const size_t slot = r * (2 * kReach + 1) + (w.key[j] - r + kReach);
-    if (!logs.RelativeValid[slot])
-    {
-      return lct::Status::NoRealLogarithm;
-    }
-    sum += w.weight[j] * logs.Relative[slot];
-  }
-  const auto m = lct::exponential(sum, p);
-  if (m)
-  {
-    out = m.value * logs.Matrices[r];
-  }
-  return m.status;
-}
-
-/// Width of the hand-over between two reference points, in weight difference.
-constexpr double kHandOver = 0.1;
-
-/**
- * The relative form (Hawkins & Grimm eq. 7) about the point of largest weight. The result
- * depends on the reference (only the matrix log of two keys is reference-free), so switching
- * references where two weights cross would make the curve jump. Where the two largest weights
- * are within kHandOver of each other, the results about both are blended along the MatrixLog
- * geodesic between them (they are close, so its log exists), with a smoothstep of the weight
- * gap that reaches the symmetric midpoint when the weights are equal: the curve stays C1.
- */
-lct::Status combineRelative(const LogCache& logs, const lct::CurveWeights& w,
-  lct::Parametrisation p, Eigen::Matrix4d& out)
-{
-  int a = -1;
-  int b = -1;
-  for (int j = 0; j < w.count; ++j)
-  {
-    if (a < 0 || w.weight[j] > w.weight[a])
-    {
-      b = a;
-      a = j;
-    }
-    else if (b < 0 || w.weight[j] > w.weight[b])
-    {
-      b = j;
-    }
-  }
-  const lct::Status status = combineAbout(logs, w, w.key[a], p, out);
-  const double gap = b < 0 ? kHandOver : w.weight[a] - w.weight[b];
-  if (status != lct::Status::Ok || gap >= kHandOver)
-  {
-    return status;
-  }
-  Eigen::Matrix4d other;
-  if (combineAbout(logs, w, w.key[b], p, other) != lct::Status::Ok)
-  {
-    return status; // no result about b: keep the one about a
-  }
-  const double x = gap / kHandOver;
-  const double s = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
-  // (R_b R_a^-1)^s R_a: at s = 1/2 the same point from either side.
-  const auto blend = lct::matrixPower(other * lct::inverseAffine(out), s);
-  if (blend)
-  {
-    out = blend.value * out;
-  }
-  return status;
-}
-} // namespace
-
 /// The keys and the logs derived from them, rebuilt together whenever the keys change.
 struct vtkTransformInterpolatorLCT::Internals
 {
   std::vector<Key> Keys;
   std::vector<double> Times;
   /// Logs of the keys (Linear, Spline, BSpline, Subdivision).
-  LogCache KeyLogs;
+  lct::KeyLogs KeyLogs;
   /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), and why they are
   /// missing if they are (MatrixLog: a control transform without a real log). That only
   /// matters to the Bezier type, so it does not stop keys from being added.
-  LogCache BezierLogs;
+  lct::KeyLogs BezierLogs;
   lct::Status BezierStatus = lct::Status::Ok;
   double BezierFailedTime = 0.0;
 
   /// The Bezier sequence: given control transforms, else automatic ones that put the
   /// Catmull-Rom tangent at each key, taken relative to the key (so C- K C+ are collinear in the
   /// key's frame): C+ = exp(+h/3 m) K, C- = exp(-h/3 m) K with h the segment's duration.
-  static lct::Status BezierSequence(const std::vector<Key>& keys, const LogCache& keyLogs,
+  static lct::Status BezierSequence(const std::vector<Key>& keys, const lct::KeyLogs& keyLogs,
     lct::Parametrisation p, std::vector<Eigen::Matrix4d>& out)
   {
     const int n = static_cast<int>(keys.size());
     out.clear();
+    // Neighbours always have relative logs (KeyLogs::build with neighboursMustCombine).
     auto tangent = [&](int k) -> lct::LogCoords {
       const int lo = std::max(k - 1, 0);
       const int hi = std::min(k + 1, n - 1);
-      const auto& rel = keyLogs.Relative;
-      const int base = k * (2 * kReach + 1) + kReach;
-      return (rel[base + (hi - k)] - rel[base + (lo - k)]) / (keys[hi].Time - keys[lo].Time);
+      return (*keyLogs.relative(hi, k) - *keyLogs.relative(lo, k)) /
+        (keys[hi].Time - keys[lo].Time);
     };
     for (int k = 0; k < n; ++k)
     {
@@ -273,21 +136,21 @@ struct vtkTransformInterpolatorLCT::Internals
     {
       matrices.push_back(k.Matrix);
     }
-    LogCache keyLogs;
+    lct::KeyLogs keyLogs;
     int failed = -1;
-    lct::Status status = keyLogs.Build(matrices, p, true, failed);
+    lct::Status status = keyLogs.build(matrices, p, true, &failed);
     if (status != lct::Status::Ok)
     {
       failedTime = keys[failed].Time;
       return status;
     }
     std::vector<Eigen::Matrix4d> sequence;
-    LogCache bezierLogs;
+    lct::KeyLogs bezierLogs;
     failed = 0;
     this->BezierStatus = BezierSequence(keys, keyLogs, p, sequence);
     if (this->BezierStatus == lct::Status::Ok)
     {
-      this->BezierStatus = bezierLogs.Build(sequence, p, false, failed);
+      this->BezierStatus = bezierLogs.build(sequence, p, false, &failed);
     }
     this->BezierFailedTime = keys.empty() ? 0.0 : keys[std::min<int>((failed + 1) / 3, static_cast<int>(keys.size()) - 1)].Time;
     this->Keys = keys;
@@ -532,26 +395,11 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << lct::describe(in.BezierStatus) << "); output unchanged.");
     return false;
   }
-  const LogCache& logs = scheme == lct::CurveScheme::Bezier ? in.BezierLogs : in.KeyLogs;
+  const lct::KeyLogs& logs = scheme == lct::CurveScheme::Bezier ? in.BezierLogs : in.KeyLogs;
   const lct::CurveWeights w = lct::curveWeights(scheme, in.Times.data(), n, t);
-  const lct::Parametrisation p = toCore(this->Parametrisation);
   Eigen::Matrix4d result;
-  lct::Status status;
-  if (this->ConsistentRotation)
-  {
-    lct::LogCoords sum = lct::LogCoords::Zero();
-    for (int j = 0; j < w.count; ++j)
-    {
-      sum += w.weight[j] * logs.Absolute[w.key[j]];
-    }
-    const auto m = lct::exponential(sum, p);
-    status = m.status;
-    result = m.value;
-  }
-  else
-  {
-    status = combineRelative(logs, w, p, result);
-  }
+  const lct::Status status =
+    this->ConsistentRotation ? logs.combineAbsolute(w, result) : logs.combineRelative(w, result);
   if (status != lct::Status::Ok)
   {
     vtkErrorMacro(<< "InterpolateTransform(" << t << "): "
