@@ -1,0 +1,262 @@
+#include "vtkCameraInterpolatorLCT.h"
+
+#include "lct/CameraKey.h"
+#include "lct/Curves.h"
+#include "lct/KeyLogs.h"
+
+#include "vtkCamera.h"
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkCameraInterpolatorLCT);
+
+namespace
+{
+lct::CurveScheme toScheme(int type)
+{
+  switch (type)
+  {
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR:
+      return lct::CurveScheme::Linear;
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE:
+      return lct::CurveScheme::BSpline;
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION:
+      return lct::CurveScheme::Subdivision;
+    default:
+      return lct::CurveScheme::CatmullRom;
+  }
+}
+
+lct::CameraParameters fromVtk(vtkCamera* camera)
+{
+  lct::CameraParameters c;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.focalPoint.data());
+  camera->GetViewUp(c.viewUp.data());
+  c.parallelProjection = camera->GetParallelProjection() != 0;
+  c.viewAngle = camera->GetViewAngle();
+  c.parallelScale = camera->GetParallelScale();
+  camera->GetWindowCenter(c.windowCenter.data());
+  camera->GetViewShear(c.viewShear.data());
+  camera->GetClippingRange(c.clippingRange.data());
+  return c;
+}
+
+void toVtk(const lct::CameraParameters& c, vtkCamera* camera)
+{
+  camera->SetFocalPoint(c.focalPoint.data());
+  camera->SetPosition(c.position.data());
+  camera->SetViewUp(c.viewUp.data());
+  camera->SetParallelProjection(c.parallelProjection);
+  camera->SetParallelScale(c.parallelScale);
+  camera->SetViewAngle(c.viewAngle);
+  camera->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);
+  camera->SetViewShear(c.viewShear[0], c.viewShear[1], c.viewShear[2]);
+  camera->SetClippingRange(c.clippingRange[0], c.clippingRange[1]);
+}
+
+struct Key
+{
+  double Time;
+  lct::CameraKey Camera;
+};
+} // namespace
+
+/// The keys and the logs of their focal frames, rebuilt together whenever the keys change.
+struct vtkCameraInterpolatorLCT::Internals
+{
+  std::vector<Key> Keys;
+  std::vector<double> Times;
+  lct::KeyLogs FrameLogs;
+
+  /// The orientations of the focal frames (their translation, the focal point, is interpolated
+  /// linearly: combining whole rigid frames in Polar coordinates would move a focal point that
+  /// all keys share). Rotations always have logs, so this only fails on non-finite input.
+  bool Build(const std::vector<Key>& keys)
+  {
+    std::vector<Eigen::Matrix4d> frames;
+    for (const Key& k : keys)
+    {
+      frames.push_back(k.Camera.focalFrame);
+      frames.back().topRightCorner<3, 1>().setZero();
+    }
+    if (this->FrameLogs.build(frames, lct::Parametrisation::Polar, true) != lct::Status::Ok)
+    {
+      return false;
+    }
+    this->Keys = keys;
+    this->Times.resize(keys.size());
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+      this->Times[i] = keys[i].Time;
+    }
+    return true;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkCameraInterpolatorLCT::vtkCameraInterpolatorLCT()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCameraInterpolatorLCT::~vtkCameraInterpolatorLCT()
+{
+  delete this->Internal;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::GetNumberOfCameras()
+{
+  return static_cast<int>(this->Internal->Keys.size());
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraInterpolatorLCT::GetMinimumT()
+{
+  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.front().Time;
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraInterpolatorLCT::GetMaximumT()
+{
+  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.back().Time;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraInterpolatorLCT::Initialize()
+{
+  this->Internal->Build({});
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
+{
+  if (!camera)
+  {
+    vtkErrorMacro(<< "AddCamera: null camera; key rejected.");
+    return 0;
+  }
+  if (!std::isfinite(t))
+  {
+    vtkErrorMacro(<< "AddCamera: the key time " << t << " is not finite; key rejected.");
+    return 0;
+  }
+  const auto key = lct::toCameraKey(fromVtk(camera));
+  if (!key)
+  {
+    vtkErrorMacro(<< "AddCamera at t = " << t << ": "
+                  << (key.status == lct::Status::NonFinite
+                         ? "the camera has NaN or Inf parameters"
+                         : "degenerate camera (position at the focal point, view-up parallel to "
+                           "the view direction, view angle outside (0, 180), parallel scale <= 0 "
+                           "or clipping range not 0 < near < far)")
+                  << "; key rejected.");
+    return 0;
+  }
+  std::vector<Key> keys = this->Internal->Keys;
+  auto at = std::lower_bound(
+    keys.begin(), keys.end(), t, [](const Key& k, double time) { return k.Time < time; });
+  for (const Key& other : keys)
+  {
+    if (other.Time != t && other.Camera.parallelProjection != key.value.parallelProjection)
+    {
+      vtkErrorMacro(<< "AddCamera at t = " << t << ": a "
+                    << (key.value.parallelProjection ? "parallel" : "perspective")
+                    << " key cannot be mixed with "
+                    << (other.Camera.parallelProjection ? "parallel" : "perspective")
+                    << " keys; key rejected.");
+      return 0;
+    }
+  }
+  const bool replaces = at != keys.end() && at->Time == t;
+  if (replaces)
+  {
+    at->Camera = key.value;
+  }
+  else
+  {
+    keys.insert(at, Key{ t, key.value });
+  }
+  if (!this->Internal->Build(keys))
+  {
+    vtkErrorMacro(<< "AddCamera at t = " << t << ": the key's frame has no logarithm; key "
+                  << "rejected.");
+    return 0;
+  }
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraInterpolatorLCT::RemoveCamera(double t)
+{
+  std::vector<Key> keys = this->Internal->Keys;
+  const auto end =
+    std::remove_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
+  if (end == keys.end())
+  {
+    return;
+  }
+  keys.erase(end, keys.end());
+  this->Internal->Build(keys);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
+{
+  const Internals& in = *this->Internal;
+  const int n = static_cast<int>(in.Keys.size());
+  if (!camera || n == 0 || std::isnan(t))
+  {
+    vtkErrorMacro(<< "InterpolateCamera: "
+                  << (!camera ? "null camera" : n == 0 ? "no keys" : "t is NaN")
+                  << "; camera unchanged.");
+    return 0;
+  }
+  const lct::CurveWeights w =
+    lct::curveWeights(toScheme(this->InterpolationType), in.Times.data(), n, t);
+  lct::CameraKey key;
+  const lct::Status status = this->ConsistentRotation
+    ? in.FrameLogs.combineAbsolute(w, key.focalFrame)
+    : in.FrameLogs.combineRelative(w, key.focalFrame);
+  if (status != lct::Status::Ok)
+  {
+    vtkErrorMacro(<< "InterpolateCamera(" << t << "): " << lct::describe(status)
+                  << "; camera unchanged.");
+    return 0;
+  }
+  key.channels.setZero();
+  Eigen::Vector3d focalPoint = Eigen::Vector3d::Zero();
+  for (int j = 0; j < w.count; ++j)
+  {
+    const lct::CameraKey& k = in.Keys[w.key[j]].Camera;
+    key.channels += w.weight[j] * k.channels;
+    focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
+  }
+  key.focalFrame.topRightCorner<3, 1>() = focalPoint;
+  key.parallelProjection = in.Keys.front().Camera.parallelProjection;
+  toVtk(lct::fromCameraKey(key), camera);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* const types[] = { "Linear", "Spline", "BSpline", "Subdivision" };
+  os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
+  os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
+  os << indent << "NumberOfCameras: " << this->GetNumberOfCameras() << "\n";
+  if (!this->Internal->Keys.empty())
+  {
+    os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT()
+       << "]\n";
+  }
+}

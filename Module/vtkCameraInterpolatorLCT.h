@@ -1,0 +1,138 @@
+/**
+ * @class   vtkCameraInterpolatorLCT
+ * @brief   interpolate vtkCamera keys as a rigid focal frame plus log-space intrinsics,
+ *          including the centre-of-projection shift (Hawkins & Grimm 2005)
+ *
+ * A drop-in replacement for vtkCameraInterpolator with the same method names. VTK's class
+ * interpolates position, focal point, view-up (as a raw vector), view angle, parallel scale and
+ * clipping range one by one, and ignores WindowCenter and ViewShear. This class splits each key
+ * camera into (see lct/CameraKey.h):
+ *
+ * - its focal frame F = [right up back | focal point]: the orientation is interpolated like
+ *   vtkTransformInterpolatorLCT does (relative form about the key of largest weight, short way
+ *   for turns over 180 degrees between neighbouring keys; or ConsistentRotation to keep a spin),
+ *   the focal point with the same curve weights. The camera therefore turns about its focal
+ *   point, and the point it looks at moves on the curve through the keys' focal points (a focal
+ *   point shared by all keys stays put);
+ * - scalar channels with the same curve weights: the distance, f = cot(view angle / 2) and the
+ *   parallel scale geometrically, the window centre and view shear linearly, the clipping
+ *   range geometrically relative to the distance.
+ *
+ * Every parameter of a key (position, focal point, orthogonalised view-up, view angle, parallel
+ * scale, window centre, view shear, clipping range) is reproduced at the key's time by the
+ * interpolating types (Linear, Spline, Subdivision). The clipping range is interpolated, not
+ * reset: call vtkRenderer::ResetCameraClippingRange() after InterpolateCamera to refit it to the
+ * scene.
+ *
+ * Keys are copied when added and decomposed once. Bad keys are rejected with vtkErrorMacro and
+ * leave the interpolator unchanged (AddCamera returns 0): NaN/Inf, position at the focal point,
+ * view-up parallel to the view direction, view angle outside (0, 180), parallel scale <= 0, an
+ * invalid clipping range, or a key whose projection (parallel / perspective) differs from the
+ * keys already present. InterpolateCamera returns 0 and leaves the camera untouched when there is
+ * no key or t is NaN; t is clamped to [GetMinimumT(), GetMaximumT()] as in VTK.
+ *
+ * @warning Derives from vtkObject, not from vtkCameraInterpolator: VTK 9.1 declares that class's
+ * methods non-virtual, so a subclass would be silently bypassed through a base pointer.
+ *
+ * @sa vtkCameraInterpolator vtkTransformInterpolatorLCT vtkCameraPathMetric
+ */
+#ifndef vtkCameraInterpolatorLCT_h
+#define vtkCameraInterpolatorLCT_h
+
+#include "vtkLCTModule.h" // For export macro
+#include "vtkObject.h"
+
+class vtkCamera;
+
+class VTKLCT_EXPORT vtkCameraInterpolatorLCT : public vtkObject
+{
+public:
+  static vtkCameraInterpolatorLCT* New();
+  vtkTypeMacro(vtkCameraInterpolatorLCT, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Number of key cameras.
+   */
+  int GetNumberOfCameras();
+
+  ///@{
+  /**
+   * The time range of the keys (0 when there is none).
+   */
+  double GetMinimumT();
+  double GetMaximumT();
+  ///@}
+
+  /**
+   * Remove all keys.
+   */
+  void Initialize();
+
+  /**
+   * Add a key camera at time t (copied; a key at an existing time is replaced). Returns 1 on
+   * success, 0 (with an error, interpolator unchanged) for a bad key (see the class description).
+   */
+  int AddCamera(double t, vtkCamera* camera);
+
+  /**
+   * Remove the key at time t (if any).
+   */
+  void RemoveCamera(double t);
+
+  /**
+   * Set `camera` to the interpolated camera at time t (clamped to the key range). Returns 1 on
+   * success, 0 when there is no key or t is NaN (the camera is then untouched).
+   */
+  int InterpolateCamera(double t, vtkCamera* camera);
+
+  enum InterpolationTypes
+  {
+    INTERPOLATION_TYPE_LINEAR = 0,
+    INTERPOLATION_TYPE_SPLINE = 1,
+    INTERPOLATION_TYPE_BSPLINE = 2,
+    INTERPOLATION_TYPE_SUBDIVISION = 3
+  };
+
+  ///@{
+  /**
+   * The curve scheme (see vtkTransformInterpolatorLCT). Default: Spline, as vtkCameraInterpolator.
+   */
+  vtkSetClampMacro(
+    InterpolationType, int, INTERPOLATION_TYPE_LINEAR, INTERPOLATION_TYPE_SUBDIVISION);
+  vtkGetMacro(InterpolationType, int);
+  void SetInterpolationTypeToLinear() { this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR); }
+  void SetInterpolationTypeToSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE); }
+  void SetInterpolationTypeToBSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_BSPLINE); }
+  void SetInterpolationTypeToSubdivision()
+  {
+    this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
+  }
+  ///@}
+
+  ///@{
+  /**
+   * Keep the winding of a key sequence that turns by more than 180 degrees between keys (see
+   * vtkTransformInterpolatorLCT). Default off: turns take the short way.
+   */
+  vtkSetMacro(ConsistentRotation, vtkTypeBool);
+  vtkGetMacro(ConsistentRotation, vtkTypeBool);
+  vtkBooleanMacro(ConsistentRotation, vtkTypeBool);
+  ///@}
+
+protected:
+  vtkCameraInterpolatorLCT();
+  ~vtkCameraInterpolatorLCT() override;
+
+  int InterpolationType = INTERPOLATION_TYPE_SPLINE;
+  vtkTypeBool ConsistentRotation = false;
+
+private:
+  vtkCameraInterpolatorLCT(const vtkCameraInterpolatorLCT&) = delete;
+  void operator=(const vtkCameraInterpolatorLCT&) = delete;
+
+  struct Internals;
+  Internals* Internal;
+};
+
+#endif

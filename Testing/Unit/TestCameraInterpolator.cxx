@@ -1,0 +1,266 @@
+// vtkCameraInterpolatorLCT: every camera parameter of a key reproduced (window centre and view
+// shear included), large turns without failure, the short way and full orbits, and every bad key.
+#include "vtkCameraInterpolatorLCT.h"
+
+#include "RandomTransforms.h"
+#include "VtkTestHelpers.h"
+
+#include "vtkCamera.h"
+#include "vtkNew.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+using lct_test::ErrorCounter;
+
+struct CameraKeySpec
+{
+  double t;
+  Eigen::Vector3d position, focal, up;
+  double angle;
+  Eigen::Vector2d center;
+  Eigen::Vector3d shear;
+};
+
+void apply(const CameraKeySpec& k, vtkCamera* c, bool parallel)
+{
+  c->SetFocalPoint(k.focal.data());
+  c->SetPosition(k.position.data());
+  c->SetViewUp(k.up.data());
+  c->SetParallelProjection(parallel);
+  c->SetViewAngle(k.angle);
+  c->SetParallelScale(k.angle / 10.0);
+  c->SetWindowCenter(k.center[0], k.center[1]);
+  c->SetViewShear(k.shear[0], k.shear[1], k.shear[2]);
+  const double d = (k.position - k.focal).norm();
+  c->SetClippingRange(0.1 * d, 3.0 * d);
+}
+
+Eigen::Vector3d get3(const double* v)
+{
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+/// Position, focal point, view plane normal, orthogonalised up, angle/scale, centre, shear, clipping.
+double cameraDifference(vtkCamera* a, vtkCamera* b)
+{
+  double d = 0.0;
+  d = std::max(d, (get3(a->GetPosition()) - get3(b->GetPosition())).norm());
+  d = std::max(d, (get3(a->GetFocalPoint()) - get3(b->GetFocalPoint())).norm());
+  a->OrthogonalizeViewUp();
+  b->OrthogonalizeViewUp();
+  d = std::max(d, (get3(a->GetViewUp()) - get3(b->GetViewUp())).norm());
+  d = std::max(d, std::abs(a->GetViewAngle() - b->GetViewAngle()) / 180.0);
+  d = std::max(d, std::abs(a->GetParallelScale() - b->GetParallelScale()));
+  d = std::max(d, std::abs(a->GetWindowCenter()[0] - b->GetWindowCenter()[0]));
+  d = std::max(d, std::abs(a->GetWindowCenter()[1] - b->GetWindowCenter()[1]));
+  d = std::max(d, (get3(a->GetViewShear()) - get3(b->GetViewShear())).norm());
+  d = std::max(d, std::abs(a->GetClippingRange()[0] - b->GetClippingRange()[0]));
+  d = std::max(d, std::abs(a->GetClippingRange()[1] - b->GetClippingRange()[1]));
+  return d;
+}
+
+std::vector<CameraKeySpec> randomKeys(int seed, int n)
+{
+  lct_test::RandomTransforms random(seed);
+  std::vector<CameraKeySpec> keys;
+  double t = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    CameraKeySpec k;
+    k.t = t;
+    k.focal = Eigen::Vector3d(random.Normal(), random.Normal(), random.Normal());
+    k.position = k.focal + random.LogUniform(2.0, 20.0) * random.UnitVector();
+    k.up = random.UnitVector();
+    k.angle = random.Uniform(10.0, 90.0);
+    k.center = Eigen::Vector2d(random.Uniform(-0.5, 0.5), random.Uniform(-0.5, 0.5));
+    k.shear = Eigen::Vector3d(random.Uniform(-0.3, 0.3), random.Uniform(-0.3, 0.3), random.Uniform(0.5, 1.5));
+    keys.push_back(k);
+    t += random.Uniform(0.5, 2.0);
+  }
+  return keys;
+}
+
+double azimuthDegrees(vtkCamera* c)
+{
+  const double* p = c->GetPosition();
+  return std::atan2(p[1], p[0]) * 180.0 / lct_test::kPi;
+}
+} // namespace
+
+TEST(CameraInterpolatorLCT, ReproducesEveryParameterOfEveryKey)
+{
+  for (bool parallel : { false, true })
+  {
+    const auto keys = randomKeys(parallel ? 2 : 1, 6);
+    for (int type : { 0, 1, 3 })
+    {
+      vtkNew<vtkCameraInterpolatorLCT> interpolator;
+      interpolator->SetInterpolationType(type);
+      for (const auto& k : keys)
+      {
+        vtkNew<vtkCamera> c;
+        apply(k, c, parallel);
+        ASSERT_EQ(interpolator->AddCamera(k.t, c), 1);
+      }
+      for (const auto& k : keys)
+      {
+        vtkNew<vtkCamera> expected, out;
+        apply(k, expected, parallel);
+        ASSERT_EQ(interpolator->InterpolateCamera(k.t, out), 1);
+        EXPECT_LT(cameraDifference(out, expected), 1e-11) << "type " << type << " t " << k.t;
+        EXPECT_EQ(out->GetParallelProjection(), parallel ? 1 : 0);
+      }
+    }
+  }
+}
+
+TEST(CameraInterpolatorLCT, LargeTurnsBetweenKeysNeverFail)
+{
+  // The paper's iterative square root failed on turns >= 90 degrees; 1000 key pairs turning
+  // 90-180 degrees about random axes through the focal point: every in-between is a valid camera
+  // at the geometric mean distance halfway, looking at the focal point.
+  lct_test::RandomTransforms random(3);
+  int failures = 0;
+  for (int i = 0; i < 1000; ++i)
+  {
+    const Eigen::Vector3d focal(random.Normal(), random.Normal(), random.Normal());
+    const Eigen::Vector3d dir = random.UnitVector();
+    const Eigen::Matrix3d turn = random.Rotation(random.Uniform(lct_test::kPi / 2, lct_test::kPi - 1e-6));
+    const double d0 = random.LogUniform(1.0, 10.0);
+    const double d1 = random.LogUniform(1.0, 10.0);
+    vtkNew<vtkCamera> a, b;
+    a->SetFocalPoint(focal.data());
+    b->SetFocalPoint(focal.data());
+    const Eigen::Vector3d pa = focal + d0 * dir;
+    const Eigen::Vector3d pb = focal + d1 * (turn * dir);
+    const Eigen::Vector3d upA = dir.unitOrthogonal();
+    const Eigen::Vector3d upB = turn * upA;
+    a->SetPosition(pa.data());
+    b->SetPosition(pb.data());
+    a->SetViewUp(upA.data());
+    b->SetViewUp(upB.data());
+    vtkNew<vtkCameraInterpolatorLCT> interpolator;
+    interpolator->SetInterpolationTypeToLinear();
+    if (!interpolator->AddCamera(0.0, a) || !interpolator->AddCamera(1.0, b))
+    {
+      ++failures;
+      continue;
+    }
+    vtkNew<vtkCamera> mid;
+    if (!interpolator->InterpolateCamera(0.5, mid))
+    {
+      ++failures;
+      continue;
+    }
+    const double distance = mid->GetDistance();
+    const bool ok = std::isfinite(distance) && std::abs(distance - std::sqrt(d0 * d1)) < 1e-9 * distance &&
+      (get3(mid->GetFocalPoint()) - focal).norm() < 1e-9;
+    failures += ok ? 0 : 1;
+    if (!ok && failures == 1)
+    {
+      ADD_FAILURE() << "distance " << distance << " expected " << std::sqrt(d0 * d1) << " focal "
+                    << (get3(mid->GetFocalPoint()) - focal).norm();
+    }
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+TEST(CameraInterpolatorLCT, ShortWayOverHalfATurnAndFullOrbits)
+{
+  auto orbitKey = [](double degrees, vtkCamera* c) {
+    const double a = degrees * lct_test::kPi / 180.0;
+    c->SetFocalPoint(0, 0, 0);
+    c->SetPosition(5 * std::cos(a), 5 * std::sin(a), 0);
+    c->SetViewUp(0, 0, 1);
+  };
+  vtkNew<vtkCameraInterpolatorLCT> halfTurn;
+  halfTurn->SetInterpolationTypeToLinear();
+  vtkNew<vtkCamera> a, b, out;
+  orbitKey(0, a);
+  orbitKey(200, b);
+  halfTurn->AddCamera(0, a);
+  halfTurn->AddCamera(1, b);
+  halfTurn->InterpolateCamera(0.5, out);
+  EXPECT_NEAR(azimuthDegrees(out), -80.0, 1e-9); // 0 -> 200 the short way: -160
+
+  // An orbit of 420 degrees in 60 degree steps: the spline passes every key and turns forward.
+  vtkNew<vtkCameraInterpolatorLCT> orbit;
+  for (int k = 0; k <= 7; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    orbitKey(60.0 * k, key);
+    ASSERT_EQ(orbit->AddCamera(k, key), 1);
+  }
+  for (int i = 0; i <= 70; ++i)
+  {
+    const double t = i / 10.0;
+    orbit->InterpolateCamera(t, out);
+    EXPECT_NEAR(std::remainder(azimuthDegrees(out) - 60.0 * t, 360.0), 0.0, 1e-6) << t;
+    EXPECT_NEAR(out->GetDistance(), 5.0, 1e-9);
+  }
+}
+
+TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
+{
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  vtkNew<ErrorCounter> errors;
+  interpolator->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> out;
+  out->SetPosition(7, 7, 7);
+  EXPECT_EQ(interpolator->InterpolateCamera(0.0, out), 0); // no keys
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_EQ(out->GetPosition()[0], 7.0);
+
+  vtkNew<vtkCamera> good;
+  ASSERT_EQ(interpolator->AddCamera(0.0, good), 1);
+  const vtkMTimeType saved = interpolator->GetMTime();
+  int expected = 1;
+  auto reject = [&](vtkCamera* c, double t, const char* what, const char* phrase) {
+    EXPECT_EQ(interpolator->AddCamera(t, c), 0) << what;
+    EXPECT_EQ(errors->Count, ++expected) << what;
+    EXPECT_NE(errors->Last.find(phrase), std::string::npos) << what << ": " << errors->Last;
+    EXPECT_EQ(interpolator->GetNumberOfCameras(), 1) << what;
+    EXPECT_EQ(interpolator->GetMTime(), saved) << what;
+  };
+  {
+    vtkNew<vtkCamera> c; // position at the focal point
+    c->SetPosition(0, 0, 0);
+    c->SetFocalPoint(0, 0, 0);
+    reject(c, 1.0, "position = focal point", "degenerate");
+  }
+  {
+    vtkNew<vtkCamera> c; // view up along the view direction
+    c->SetPosition(0, 0, 5);
+    c->SetFocalPoint(0, 0, 0);
+    c->SetViewUp(0, 0, 1);
+    reject(c, 1.0, "view up parallel", "degenerate");
+  }
+  {
+    vtkNew<vtkCamera> c;
+    c->SetPosition(std::nan(""), 0, 1);
+    reject(c, 1.0, "NaN position", "NaN");
+  }
+  {
+    vtkNew<vtkCamera> c;
+    c->SetWindowCenter(std::numeric_limits<double>::infinity(), 0);
+    reject(c, 1.0, "Inf window centre", "NaN or Inf");
+  }
+  {
+    vtkNew<vtkCamera> c;
+    c->ParallelProjectionOn();
+    reject(c, 1.0, "parallel among perspective", "cannot be mixed");
+  }
+  reject(good, std::nan(""), "NaN time", "not finite");
+  EXPECT_EQ(interpolator->InterpolateCamera(std::nan(""), out), 0);
+  EXPECT_EQ(errors->Count, ++expected);
+  // Replacing the only key by a parallel one is allowed (nothing to mix with).
+  vtkNew<vtkCamera> parallel;
+  parallel->ParallelProjectionOn();
+  EXPECT_EQ(interpolator->AddCamera(0.0, parallel), 1);
+  EXPECT_EQ(interpolator->GetNumberOfCameras(), 1);
+}
