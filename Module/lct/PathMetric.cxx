@@ -1,0 +1,72 @@
+#include "lct/PathMetric.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lct
+{
+
+PathMetricResult measurePath(
+  const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& views,
+  const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& projections,
+  const std::vector<Eigen::Vector3d>& points)
+{
+  PathMetricResult out;
+  out.leftView.assign(points.size(), 0);
+  const std::size_t samples = std::min(views.size(), projections.size());
+  if (samples < 2 || points.empty())
+  {
+    return out;
+  }
+  // A chord shorter than this fraction of the path's own scale carries no direction: skip it.
+  constexpr double kNegligible = 1e-9;
+  double cameraSum = 0.0;
+  double screenSum = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Eigen::Vector4d p(points[i].x(), points[i].y(), points[i].z(), 1.0);
+    double cameraLength = 0.0;
+    double screenLength = 0.0;
+    Eigen::Vector3d firstCamera, lastCamera;
+    Eigen::Vector2d firstScreen, lastScreen;
+    for (std::size_t s = 0; s < samples; ++s)
+    {
+      const Eigen::Vector3d c = (views[s] * p).head<3>();
+      const Eigen::Vector4d clip = projections[s] * p;
+      const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
+      if (!(clip.w() > 0.0) || std::abs(ndc.x()) > 1.0 || std::abs(ndc.y()) > 1.0)
+      {
+        out.leftView[i] = 1;
+      }
+      if (s > 0)
+      {
+        cameraLength += (c - lastCamera).norm();
+        screenLength += (ndc - lastScreen).norm();
+      }
+      else
+      {
+        firstCamera = c;
+        firstScreen = ndc;
+      }
+      lastCamera = c;
+      lastScreen = ndc;
+    }
+    const double cameraChord = (lastCamera - firstCamera).norm();
+    if (cameraChord > kNegligible * (1.0 + cameraLength))
+    {
+      cameraSum += 100.0 * (cameraLength - cameraChord) / cameraChord;
+      ++out.pointsMeasuredCamera;
+    }
+    const double screenChord = (lastScreen - firstScreen).norm();
+    if (std::isfinite(screenLength) && screenChord > kNegligible * (1.0 + screenLength))
+    {
+      screenSum += 100.0 * (screenLength - screenChord) / screenChord;
+      ++out.pointsMeasuredScreen;
+    }
+  }
+  out.cameraSpaceExcess = out.pointsMeasuredCamera ? cameraSum / out.pointsMeasuredCamera : 0.0;
+  out.screenSpaceExcess = out.pointsMeasuredScreen ? screenSum / out.pointsMeasuredScreen : 0.0;
+  return out;
+}
+
+} // namespace lct

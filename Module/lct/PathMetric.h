@@ -1,0 +1,44 @@
+/**
+ * @file PathMetric.h
+ * @brief Hawkins & Grimm's quality metric for camera paths (§5.1): how much farther than
+ *        necessary scene points travel, in camera space and on the screen.
+ *
+ * For each scene point, the path it follows in camera space (view matrix times point) over the
+ * sampled cameras has length l; the straight segment between its first and last positions has
+ * length l0. The excess is 100 (l - l0) / l0 percent (the paper prints it with the sign
+ * flipped), averaged over the points whose l0 is not negligible. The same on the screen uses the
+ * normalised device coordinates (x, y) of the composite projection. A point "leaves the view"
+ * when at some sample it is behind the camera or outside [-1, 1]^2 on the screen.
+ */
+#ifndef lct_PathMetric_h
+#define lct_PathMetric_h
+
+#include "vtkLCTModule.h"
+
+#include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include <vector>
+
+namespace lct
+{
+
+struct PathMetricResult
+{
+  double cameraSpaceExcess = 0.0; ///< mean excess path length in camera space, percent
+  double screenSpaceExcess = 0.0; ///< mean excess path length on the screen, percent
+  int pointsMeasuredCamera = 0;   ///< points with a non-negligible camera-space chord
+  int pointsMeasuredScreen = 0;   ///< points with a non-negligible screen chord
+  std::vector<char> leftView;     ///< per point: left the view at some sample
+};
+
+/// The metric over cameras given by their view matrices and composite projection matrices
+/// (world to clip coordinates), sampled in order along the path (at least two samples).
+VTKLCT_EXPORT PathMetricResult measurePath(
+  const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& views,
+  const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& projections,
+  const std::vector<Eigen::Vector3d>& points);
+
+} // namespace lct
+
+#endif
