@@ -1,0 +1,131 @@
+// vtkInterpolatorCueLCT in a vtkAnimationScene (sequence mode): every tick sets the camera and
+// the props to their interpolators' values at the mapped key time.
+#include "vtkInterpolatorCueLCT.h"
+
+#include "VtkTestHelpers.h"
+
+#include "vtkActor.h"
+#include "vtkAnimationScene.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCameraInterpolatorLCT.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkTransform.h"
+#include "vtkTransformInterpolatorLCT.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace
+{
+struct TickRecord
+{
+  std::vector<double> cueTimes;
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Matrix4d> propMatrices;
+  vtkCamera* camera = nullptr;
+  vtkActor* actor = nullptr;
+};
+
+void onTick(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* record = static_cast<TickRecord*>(clientData);
+  auto* cue = static_cast<vtkAnimationCue*>(caller);
+  record->cueTimes.push_back(cue->GetAnimationTime());
+  const double* p = record->camera->GetPosition();
+  record->positions.emplace_back(p[0], p[1], p[2]);
+  record->propMatrices.push_back(lct_test::fromVtk(record->actor->GetUserMatrix()));
+}
+} // namespace
+
+TEST(InterpolatorCueLCT, SequenceSceneDrivesCameraAndPropsOverTheKeyRange)
+{
+  vtkNew<vtkCameraInterpolatorLCT> cameraPath;
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(10.0 * std::cos(k), 10.0 * std::sin(k), 2.0 * k);
+    key->SetViewUp(0, 0, 1);
+    ASSERT_EQ(cameraPath->AddCamera(10.0 + 5.0 * k, key), 1); // keys at t = 10 .. 25
+  }
+  vtkNew<vtkTransformInterpolatorLCT> propPath;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkTransform> key;
+    key->RotateZ(100.0 * k);
+    key->Scale(1.0 + k, 1.0, 1.0);
+    ASSERT_EQ(propPath->AddTransform(k, key), 1); // keys at t = 0 .. 2
+  }
+  vtkNew<vtkCamera> camera;
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  cue->SetCamera(camera);
+  cue->SetCameraInterpolator(cameraPath);
+  ASSERT_EQ(cue->AddProp(actor, propPath), 1);
+  cue->SetTimeModeToNormalized();
+  cue->SetStartTime(0.0);
+  cue->SetEndTime(1.0);
+
+  TickRecord record;
+  record.camera = camera;
+  record.actor = actor;
+  vtkNew<vtkCallbackCommand> tick;
+  tick->SetCallback(onTick);
+  tick->SetClientData(&record);
+  cue->AddObserver(vtkCommand::AnimationCueTickEvent, tick);
+
+  vtkNew<vtkAnimationScene> scene;
+  scene->SetModeToSequence();
+  scene->SetFrameRate(10);
+  scene->SetStartTime(0.0);
+  scene->SetEndTime(2.0);
+  scene->AddCue(cue);
+  scene->Play();
+
+  ASSERT_GE(record.cueTimes.size(), 10u);
+  for (size_t i = 0; i < record.cueTimes.size(); ++i)
+  {
+    const double u = record.cueTimes[i];
+    vtkNew<vtkCamera> expected;
+    cameraPath->InterpolateCamera(10.0 + 15.0 * u, expected);
+    const double* p = expected->GetPosition();
+    EXPECT_LT((record.positions[i] - Eigen::Vector3d(p[0], p[1], p[2])).norm(), 1e-12) << u;
+    vtkNew<vtkMatrix4x4> m;
+    propPath->InterpolateTransform(2.0 * u, m);
+    EXPECT_LT((record.propMatrices[i] - lct_test::fromVtk(m)).norm(), 1e-12) << u;
+  }
+  EXPECT_DOUBLE_EQ(record.cueTimes.front(), 0.0);
+  EXPECT_NEAR(record.cueTimes.back(), 1.0, 0.051); // the scene may stop one frame short
+
+  // Cue-time mapping: key time = cue time - start.
+  cue->SetKeyTimeMappingToCueTime();
+  EXPECT_DOUBLE_EQ(cue->KeyTime(0.75, 10.0, 25.0), 0.75);
+  cue->SetKeyTimeMappingToRange();
+  EXPECT_DOUBLE_EQ(cue->KeyTime(0.5, 10.0, 25.0), 17.5);
+}
+
+TEST(InterpolatorCueLCT, NullArgumentsAndFailingPathsAreReported)
+{
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  vtkNew<lct_test::ErrorCounter> errors;
+  cue->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkActor> actor;
+  EXPECT_EQ(cue->AddProp(nullptr, nullptr), 0);
+  EXPECT_EQ(cue->AddProp(actor, nullptr), 0);
+  EXPECT_EQ(cue->GetNumberOfProps(), 0);
+  // A camera path without keys: the tick reports it and leaves the camera alone.
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1, 2, 3);
+  vtkNew<vtkCameraInterpolatorLCT> empty;
+  empty->AddObserver(vtkCommand::ErrorEvent, errors);
+  cue->SetCamera(camera);
+  cue->SetCameraInterpolator(empty);
+  cue->SetStartTime(0);
+  cue->SetEndTime(1);
+  cue->Initialize();
+  cue->Tick(0.5, 0.1, 0.5);
+  EXPECT_EQ(camera->GetPosition()[0], 1.0);
+  EXPECT_EQ(errors->Count, 4); // two AddProp, the path's own error, the cue's
+}
