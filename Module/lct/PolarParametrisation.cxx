@@ -42,8 +42,10 @@ Result<Eigen::Matrix4d> polarExp(const LogCoords& c)
   {
     return R::failure(Status::NonFinite);
   }
-  const Eigen::Matrix3d linear =
-    expSO3(rotationPart(c)) * expSym(fromSymmetricVector(symmetricPart(c)));
+  // Rigid maps (Y = 0, the common case of cameras and skeletons) skip the stretch entirely.
+  const Eigen::Matrix3d linear = symmetricPart(c).isZero(0.0)
+    ? expSO3(rotationPart(c))
+    : Eigen::Matrix3d(expSO3(rotationPart(c)) * expSym(fromSymmetricVector(symmetricPart(c))));
   R out{ makeAffine(linear, translationPart(c)), Status::Ok };
   if (!out.value.allFinite())
   {

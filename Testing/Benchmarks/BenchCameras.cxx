@@ -1,0 +1,226 @@
+// Camera paths: ns per InterpolateCamera of vtkCameraInterpolatorLCT against VTK's
+// vtkCameraInterpolator (same keys, same run), then Hawkins & Grimm's path-quality experiment
+// (§5.1) on random key pairs of our own design, both interpolators side by side.
+#include "vtkCameraInterpolatorLCT.h"
+#include "vtkCameraPathMetric.h"
+
+#include "../Unit/RandomTransforms.h"
+#include "RecordingReporter.h"
+
+#include "vtkCamera.h"
+#include "vtkCameraInterpolator.h"
+#include "vtkCollection.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+
+#include <Eigen/Geometry>
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int kQueries = 1024;
+
+/// A random camera around the unit sphere: focal point near the origin, turned from `direction`
+/// by up to `maxTurn` radians, distance 4-8, view angle 20-50 degrees, window centre +-0.3.
+void randomCamera(lct_test::RandomTransforms& random, const Eigen::Vector3d& direction, double turn,
+  vtkCamera* camera)
+{
+  const Eigen::Vector3d axis = direction.unitOrthogonal();
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(turn, (axis + 0.3 * random.UnitVector()).normalized()).toRotationMatrix();
+  const Eigen::Vector3d dir = r * direction;
+  const Eigen::Vector3d focal = 0.3 * random.Uniform(0.0, 1.0) * random.UnitVector();
+  const Eigen::Vector3d position = focal + random.LogUniform(4.0, 8.0) * dir;
+  const Eigen::Vector3d up = r * direction.unitOrthogonal().cross(direction);
+  camera->SetFocalPoint(focal.data());
+  camera->SetPosition(position.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(random.Uniform(20.0, 50.0));
+  camera->SetWindowCenter(random.Uniform(-0.3, 0.3), random.Uniform(-0.3, 0.3));
+}
+
+/// n keys of a flight around the scene: 40 degree steps.
+void addKeys(int n, vtkCameraInterpolatorLCT* ours, vtkCameraInterpolator* vtk)
+{
+  lct_test::RandomTransforms random(91);
+  const Eigen::Vector3d start(0, 0, 1);
+  for (int k = 0; k < n; ++k)
+  {
+    vtkNew<vtkCamera> c;
+    randomCamera(random, start, k * 0.7, c);
+    if (ours)
+    {
+      ours->AddCamera(k, c);
+    }
+    if (vtk)
+    {
+      vtk->AddCamera(k, c);
+    }
+  }
+}
+
+std::vector<double> queries(int n)
+{
+  lct_test::RandomTransforms random(92);
+  std::vector<double> t(kQueries);
+  for (double& x : t)
+  {
+    x = random.Uniform(0.0, n - 1.0);
+  }
+  return t;
+}
+
+void Ours(benchmark::State& state, int type)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  interpolator->SetInterpolationType(type);
+  addKeys(n, interpolator, nullptr);
+  const std::vector<double> t = queries(n);
+  vtkNew<vtkCamera> out;
+  int i = 0;
+  for (auto _ : state)
+  {
+    interpolator->InterpolateCamera(t[i], out);
+    benchmark::DoNotOptimize(out->GetPosition()[0]);
+    i = (i + 1) & (kQueries - 1);
+  }
+}
+
+void Vtk(benchmark::State& state, int type)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkCameraInterpolator> interpolator;
+  interpolator->SetInterpolationType(type);
+  addKeys(n, nullptr, interpolator);
+  const std::vector<double> t = queries(n);
+  vtkNew<vtkCamera> out;
+  interpolator->InterpolateCamera(t[0], out); // VTK initialises lazily
+  int i = 0;
+  for (auto _ : state)
+  {
+    interpolator->InterpolateCamera(t[i], out);
+    benchmark::DoNotOptimize(out->GetPosition()[0]);
+    i = (i + 1) & (kQueries - 1);
+  }
+}
+
+void Ours_Linear(benchmark::State& s) { Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR); }
+void Ours_Spline(benchmark::State& s) { Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
+void Vtk_Linear(benchmark::State& s) { Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_LINEAR); }
+void Vtk_Spline(benchmark::State& s) { Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_SPLINE); }
+BENCHMARK(Ours_Linear)->Arg(2)->Arg(10);
+BENCHMARK(Ours_Spline)->Arg(2)->Arg(10);
+BENCHMARK(Vtk_Linear)->Arg(2)->Arg(10);
+BENCHMARK(Vtk_Spline)->Arg(2)->Arg(10);
+
+struct Quality
+{
+  double camera = 0.0;
+  double screen = 0.0;
+  double leaving = 0.0; ///< mean fraction of points leaving the view, percent
+  int failures = 0;
+};
+
+/// Hawkins & Grimm §5.1 on `pairs` random key pairs turning up to maxTurnDegrees.
+void experiment(double minTurnDegrees, double maxTurnDegrees, int pairs, Quality& ours, Quality& vtk)
+{
+  lct_test::RandomTransforms random(93);
+  vtkNew<vtkPoints> scene;
+  for (int i = 0; i < 500; ++i)
+  {
+    const Eigen::Vector3d p = random.Uniform(0.0, 1.0) * random.UnitVector();
+    scene->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCameraPathMetric> metric;
+  metric->SetPoints(scene);
+  metric->SetNumberOfSamples(11);
+  const double toRadians = lct_test::kPi / 180.0;
+  for (int k = 0; k < pairs; ++k)
+  {
+    const Eigen::Vector3d start = random.UnitVector();
+    vtkNew<vtkCamera> a, b;
+    randomCamera(random, start, 0.0, a);
+    randomCamera(random, start, random.Uniform(minTurnDegrees, maxTurnDegrees) * toRadians, b);
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    path->SetInterpolationTypeToLinear();
+    if (!path->AddCamera(0, a) || !path->AddCamera(1, b) || !metric->EvaluateInterpolator(path, 0, 1))
+    {
+      ++ours.failures;
+    }
+    else
+    {
+      ours.camera += metric->GetCameraSpaceExcess() / pairs;
+      ours.screen += metric->GetScreenSpaceExcess() / pairs;
+      ours.leaving += 100.0 * metric->GetNumberOfPointsLeavingView() / 500.0 / pairs;
+    }
+    // VTK's default type (its linear type returns uninitialised positions in 9.1).
+    vtkNew<vtkCameraInterpolator> theirs;
+    theirs->AddCamera(0, a);
+    theirs->AddCamera(1, b);
+    vtkNew<vtkCollection> cameras;
+    for (int s = 0; s <= 10; ++s)
+    {
+      vtkNew<vtkCamera> c;
+      theirs->InterpolateCamera(s / 10.0, c);
+      cameras->AddItem(c);
+    }
+    if (!metric->EvaluateCameras(cameras))
+    {
+      ++vtk.failures;
+    }
+    else
+    {
+      vtk.camera += metric->GetCameraSpaceExcess() / pairs;
+      vtk.screen += metric->GetScreenSpaceExcess() / pairs;
+      vtk.leaving += 100.0 * metric->GetNumberOfPointsLeavingView() / 500.0 / pairs;
+    }
+  }
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  benchmark::Initialize(&argc, argv);
+  lct_bench::RecordingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\nInterpolateCamera, ns per call (targets: <= 1.0x VTK spline, <= 3x VTK linear; VTK "
+              "9.1's linear type returns garbage, timed anyway):\n");
+  std::printf("  %-5s %-8s %9s %12s %12s %10s %10s\n", "keys", "ours", "ours ns", "VTK lin ns",
+    "VTK spl ns", "/VTK lin", "/VTK spl");
+  for (int n : { 2, 10 })
+  {
+    for (const char* scheme : { "Linear", "Spline" })
+    {
+      const std::string k = "/" + std::to_string(n);
+      const double ours = reporter.Get(std::string("Ours_") + scheme + k);
+      const double linear = reporter.Get("Vtk_Linear" + k);
+      const double spline = reporter.Get("Vtk_Spline" + k);
+      if (ours > 0 && linear > 0 && spline > 0)
+      {
+        std::printf("  %-5d %-8s %9.1f %12.1f %12.1f %9.2fx %9.2fx\n", n, scheme, ours, linear,
+          spline, ours / linear, ours / spline);
+      }
+    }
+  }
+  std::printf("\nPath quality (Hawkins & Grimm 5.1), 100 random key pairs each, 500 scene points "
+              "in the unit ball, 11 samples; mean excess path length (lower is better):\n");
+  std::printf("  %-12s %-28s %10s %10s %12s %9s\n", "turns", "method", "camera %", "screen %",
+    "left view %", "failures");
+  for (const auto& range : { std::pair<double, double>(0, 90), std::pair<double, double>(90, 170) })
+  {
+    Quality ours, vtk;
+    experiment(range.first, range.second, 100, ours, vtk);
+    const std::string label = std::to_string(static_cast<int>(range.first)) + "-" +
+      std::to_string(static_cast<int>(range.second)) + " deg";
+    std::printf("  %-12s %-28s %10.1f %10.1f %12.2f %9d\n", label.c_str(),
+      "vtkCameraInterpolatorLCT", ours.camera, ours.screen, ours.leaving, ours.failures);
+    std::printf("  %-12s %-28s %10.1f %10.1f %12.2f %9d\n", label.c_str(),
+      "vtkCameraInterpolator", vtk.camera, vtk.screen, vtk.leaving, vtk.failures);
+  }
+  benchmark::Shutdown();
+  return 0;
+}
