@@ -65,35 +65,55 @@ struct Key
 };
 } // namespace
 
-/// The keys and the logs of their focal frames, rebuilt together whenever the keys change.
+/// The keys and the logs of their orientations, updated together whenever the keys change.
+/// Only the orientation of the focal frame goes through the key logs: its translation, the focal
+/// point, is interpolated linearly (combining whole rigid frames in Polar coordinates would move a
+/// focal point that the keys share). Rotations always have logs, so updates cannot fail.
 struct vtkCameraInterpolatorLCT::Internals
 {
   std::vector<Key> Keys;
   std::vector<double> Times;
-  lct::KeyLogs FrameLogs;
+  lct::KeyLogs Orientations;
 
-  /// The orientations of the focal frames (their translation, the focal point, is interpolated
-  /// linearly: combining whole rigid frames in Polar coordinates would move a focal point that
-  /// all keys share). Rotations always have logs, so this only fails on non-finite input.
-  bool Build(const std::vector<Key>& keys)
+  static Eigen::Matrix4d Orientation(const Key& key)
   {
-    std::vector<Eigen::Matrix4d> frames;
-    for (const Key& k : keys)
+    Eigen::Matrix4d m = key.Camera.focalFrame;
+    m.topRightCorner<3, 1>().setZero();
+    return m;
+  }
+
+  void KeysChanged()
+  {
+    this->Times.resize(this->Keys.size());
+    for (size_t i = 0; i < this->Keys.size(); ++i)
     {
-      frames.push_back(k.Camera.focalFrame);
-      frames.back().topRightCorner<3, 1>().setZero();
+      this->Times[i] = this->Keys[i].Time;
     }
-    if (this->FrameLogs.build(frames, lct::Parametrisation::Polar, true) != lct::Status::Ok)
+  }
+
+  void Add(const Key& key)
+  {
+    auto at = std::lower_bound(this->Keys.begin(), this->Keys.end(), key.Time,
+      [](const Key& k, double time) { return k.Time < time; });
+    const int index = static_cast<int>(at - this->Keys.begin());
+    if (at != this->Keys.end() && at->Time == key.Time)
     {
-      return false;
+      this->Orientations.replace(index, Orientation(key), false);
+      *at = key;
     }
-    this->Keys = keys;
-    this->Times.resize(keys.size());
-    for (size_t i = 0; i < keys.size(); ++i)
+    else
     {
-      this->Times[i] = keys[i].Time;
+      this->Orientations.insert(index, Orientation(key), false);
+      this->Keys.insert(at, key);
     }
-    return true;
+    this->KeysChanged();
+  }
+
+  void Remove(int index)
+  {
+    this->Orientations.erase(index, false);
+    this->Keys.erase(this->Keys.begin() + index);
+    this->KeysChanged();
   }
 };
 
@@ -130,7 +150,9 @@ double vtkCameraInterpolatorLCT::GetMaximumT()
 //------------------------------------------------------------------------------
 void vtkCameraInterpolatorLCT::Initialize()
 {
-  this->Internal->Build({});
+  this->Internal->Keys.clear();
+  this->Internal->Orientations = lct::KeyLogs();
+  this->Internal->KeysChanged();
   this->Modified();
 }
 
@@ -159,10 +181,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << "; key rejected.");
     return 0;
   }
-  std::vector<Key> keys = this->Internal->Keys;
-  auto at = std::lower_bound(
-    keys.begin(), keys.end(), t, [](const Key& k, double time) { return k.Time < time; });
-  for (const Key& other : keys)
+  for (const Key& other : this->Internal->Keys)
   {
     if (other.Time != t && other.Camera.parallelProjection != key.value.parallelProjection)
     {
@@ -174,21 +193,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
       return 0;
     }
   }
-  const bool replaces = at != keys.end() && at->Time == t;
-  if (replaces)
-  {
-    at->Camera = key.value;
-  }
-  else
-  {
-    keys.insert(at, Key{ t, key.value });
-  }
-  if (!this->Internal->Build(keys))
-  {
-    vtkErrorMacro(<< "AddCamera at t = " << t << ": the key's frame has no logarithm; key "
-                  << "rejected.");
-    return 0;
-  }
+  this->Internal->Add(Key{ t, key.value });
   this->Modified();
   return 1;
 }
@@ -196,15 +201,13 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
 //------------------------------------------------------------------------------
 void vtkCameraInterpolatorLCT::RemoveCamera(double t)
 {
-  std::vector<Key> keys = this->Internal->Keys;
-  const auto end =
-    std::remove_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
-  if (end == keys.end())
+  const std::vector<Key>& keys = this->Internal->Keys;
+  const auto at = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
+  if (at == keys.end())
   {
     return;
   }
-  keys.erase(end, keys.end());
-  this->Internal->Build(keys);
+  this->Internal->Remove(static_cast<int>(at - keys.begin()));
   this->Modified();
 }
 
@@ -224,8 +227,8 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
     lct::curveWeights(toScheme(this->InterpolationType), in.Times.data(), n, t);
   lct::CameraKey key;
   const lct::Status status = this->ConsistentRotation
-    ? in.FrameLogs.combineAbsolute(w, key.focalFrame)
-    : in.FrameLogs.combineRelative(w, key.focalFrame);
+    ? in.Orientations.combineAbsolute(w, key.focalFrame)
+    : in.Orientations.combineRelative(w, key.focalFrame);
   if (status != lct::Status::Ok)
   {
     vtkErrorMacro(<< "InterpolateCamera(" << t << "): " << lct::describe(status)

@@ -57,110 +57,160 @@ lct::CurveScheme toScheme(int type)
 }
 } // namespace
 
-/// The keys and the logs derived from them, rebuilt together whenever the keys change.
+/// The keys and the logs derived from them, updated together whenever the keys change.
 struct vtkTransformInterpolatorLCT::Internals
 {
   std::vector<Key> Keys;
   std::vector<double> Times;
-  /// Logs of the keys (Linear, Spline, BSpline, Subdivision).
+  /// Logs of the keys (Linear, Spline, BSpline, Subdivision), updated incrementally.
   lct::KeyLogs KeyLogs;
-  /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), and why they are
-  /// missing if they are (MatrixLog: a control transform without a real log). That only
-  /// matters to the Bezier type, so it does not stop keys from being added.
+  /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), built on the first
+  /// Bezier evaluation after a change, and why they are missing if they are (MatrixLog: a
+  /// control transform without a real log), which only matters to the Bezier type.
+  bool BezierCurrent = false;
   lct::KeyLogs BezierLogs;
   lct::Status BezierStatus = lct::Status::Ok;
   double BezierFailedTime = 0.0;
 
   /// The Bezier sequence: given control transforms, else automatic ones that put the
-  /// Catmull-Rom tangent at each key, taken relative to the key (so C- K C+ are collinear in the
-  /// key's frame): C+ = exp(+h/3 m) K, C- = exp(-h/3 m) K with h the segment's duration.
-  static lct::Status BezierSequence(const std::vector<Key>& keys, const lct::KeyLogs& keyLogs,
-    lct::Parametrisation p, std::vector<Eigen::Matrix4d>& out)
+  /// Catmull-Rom tangent m of the logs relative to the key (in its frame) at each key:
+  /// C+ = K exp(+h/3 m), C- = K exp(-h/3 m), with h the segment's duration.
+  lct::Status BezierSequence(std::vector<Eigen::Matrix4d>& out, int& failedKey) const
   {
-    const int n = static_cast<int>(keys.size());
+    const int n = static_cast<int>(this->Keys.size());
+    const lct::Parametrisation p = this->KeyLogs.parametrisation();
     out.clear();
-    // Neighbours always have relative logs (KeyLogs::build with neighboursMustCombine).
+    // Neighbours always have relative logs (the key logs require it).
     auto tangent = [&](int k) -> lct::LogCoords {
       const int lo = std::max(k - 1, 0);
       const int hi = std::min(k + 1, n - 1);
-      return (*keyLogs.relative(hi, k) - *keyLogs.relative(lo, k)) /
-        (keys[hi].Time - keys[lo].Time);
+      return (*this->KeyLogs.relative(hi, k) - *this->KeyLogs.relative(lo, k)) /
+        (this->Times[hi] - this->Times[lo]);
+    };
+    auto automatic = [&](int k, double signedThird, Eigen::Matrix4d& control) {
+      const auto c = lct::exponential(signedThird * tangent(k), p);
+      if (c)
+      {
+        control = this->Keys[k].Matrix * c.value;
+      }
+      failedKey = k;
+      return c.status;
     };
     for (int k = 0; k < n; ++k)
     {
+      const Key& key = this->Keys[k];
+      Eigen::Matrix4d control;
       if (k > 0)
       {
-        if (keys[k].HasIncoming)
+        if (!key.HasIncoming)
         {
-          out.push_back(keys[k].Incoming);
-        }
-        else
-        {
-          const double h = keys[k].Time - keys[k - 1].Time;
-          const auto c = lct::exponential(-h / 3.0 * tangent(k), p);
-          if (!c)
+          const lct::Status status = automatic(k, -(this->Times[k] - this->Times[k - 1]) / 3.0, control);
+          if (status != lct::Status::Ok)
           {
-            return c.status;
+            return status;
           }
-          out.push_back(c.value * keys[k].Matrix);
         }
+        out.push_back(key.HasIncoming ? key.Incoming : control);
       }
-      out.push_back(keys[k].Matrix);
+      out.push_back(key.Matrix);
       if (k + 1 < n)
       {
-        if (keys[k].HasOutgoing)
+        if (!key.HasOutgoing)
         {
-          out.push_back(keys[k].Outgoing);
-        }
-        else
-        {
-          const double h = keys[k + 1].Time - keys[k].Time;
-          const auto c = lct::exponential(h / 3.0 * tangent(k), p);
-          if (!c)
+          const lct::Status status = automatic(k, (this->Times[k + 1] - this->Times[k]) / 3.0, control);
+          if (status != lct::Status::Ok)
           {
-            return c.status;
+            return status;
           }
-          out.push_back(c.value * keys[k].Matrix);
         }
+        out.push_back(key.HasOutgoing ? key.Outgoing : control);
       }
     }
     return lct::Status::Ok;
   }
 
-  /// Computes every log for `keys` in parametrisation p and, on success, makes them current.
-  /// On failure nothing changes and `failedTime` is the time of the offending key.
-  lct::Status Build(const std::vector<Key>& keys, lct::Parametrisation p, double& failedTime)
+  /// The Bezier logs, built if the keys changed since the last call.
+  const lct::KeyLogs& Bezier()
+  {
+    if (!this->BezierCurrent)
+    {
+      std::vector<Eigen::Matrix4d> sequence;
+      int failed = 0;
+      this->BezierStatus = this->BezierSequence(sequence, failed);
+      if (this->BezierStatus == lct::Status::Ok)
+      {
+        this->BezierStatus =
+          this->BezierLogs.build(sequence, this->KeyLogs.parametrisation(), false, &failed);
+        failed = (failed + 1) / 3;
+      }
+      this->BezierFailedTime = this->Times.empty() ? 0.0 : this->Times[std::min<size_t>(failed, this->Times.size() - 1)];
+      this->BezierCurrent = true;
+    }
+    return this->BezierLogs;
+  }
+
+  void KeysChanged()
+  {
+    this->Times.resize(this->Keys.size());
+    for (size_t i = 0; i < this->Keys.size(); ++i)
+    {
+      this->Times[i] = this->Keys[i].Time;
+    }
+    this->BezierCurrent = false;
+  }
+
+  /// Adds or replaces (same time) a key. On failure nothing changes.
+  lct::Status Add(const Key& key)
+  {
+    auto at = std::lower_bound(this->Keys.begin(), this->Keys.end(), key.Time,
+      [](const Key& k, double time) { return k.Time < time; });
+    const int index = static_cast<int>(at - this->Keys.begin());
+    const bool replaces = at != this->Keys.end() && at->Time == key.Time;
+    const lct::Status status = replaces ? this->KeyLogs.replace(index, key.Matrix, true)
+                                        : this->KeyLogs.insert(index, key.Matrix, true);
+    if (status == lct::Status::Ok)
+    {
+      if (replaces)
+      {
+        *at = key;
+      }
+      else
+      {
+        this->Keys.insert(at, key);
+      }
+      this->KeysChanged();
+    }
+    return status;
+  }
+
+  /// Removes the key at `index`. On failure nothing changes.
+  lct::Status Remove(int index)
+  {
+    const lct::Status status = this->KeyLogs.erase(index, true);
+    if (status == lct::Status::Ok)
+    {
+      this->Keys.erase(this->Keys.begin() + index);
+      this->KeysChanged();
+    }
+    return status;
+  }
+
+  /// Recomputes every log in parametrisation p. On failure nothing changes.
+  lct::Status Rebuild(lct::Parametrisation p, double& failedTime)
   {
     std::vector<Eigen::Matrix4d> matrices;
-    for (const Key& k : keys)
+    for (const Key& k : this->Keys)
     {
       matrices.push_back(k.Matrix);
     }
-    lct::KeyLogs keyLogs;
-    int failed = -1;
-    lct::Status status = keyLogs.build(matrices, p, true, &failed);
+    int failed = 0;
+    const lct::Status status = this->KeyLogs.build(matrices, p, true, &failed);
     if (status != lct::Status::Ok)
     {
-      failedTime = keys[failed].Time;
+      failedTime = this->Times[failed];
       return status;
     }
-    std::vector<Eigen::Matrix4d> sequence;
-    lct::KeyLogs bezierLogs;
-    failed = 0;
-    this->BezierStatus = BezierSequence(keys, keyLogs, p, sequence);
-    if (this->BezierStatus == lct::Status::Ok)
-    {
-      this->BezierStatus = bezierLogs.build(sequence, p, false, &failed);
-    }
-    this->BezierFailedTime = keys.empty() ? 0.0 : keys[std::min<int>((failed + 1) / 3, static_cast<int>(keys.size()) - 1)].Time;
-    this->Keys = keys;
-    this->KeyLogs = std::move(keyLogs);
-    this->BezierLogs = std::move(bezierLogs);
-    this->Times.resize(keys.size());
-    for (size_t i = 0; i < keys.size(); ++i)
-    {
-      this->Times[i] = keys[i].Time;
-    }
+    this->KeysChanged();
     return lct::Status::Ok;
   }
 };
@@ -198,8 +248,9 @@ double vtkTransformInterpolatorLCT::GetMaximumT()
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::Initialize()
 {
-  double unused;
-  this->Internal->Build({}, toCore(this->Parametrisation), unused);
+  this->Internal->Keys.clear();
+  this->Internal->KeyLogs = lct::KeyLogs(toCore(this->Parametrisation));
+  this->Internal->KeysChanged();
   this->Modified();
 }
 
@@ -219,24 +270,13 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
                   << "; key rejected.");
     return 0;
   }
-  std::vector<Key> keys = this->Internal->Keys;
-  auto at = std::lower_bound(
-    keys.begin(), keys.end(), t, [](const Key& k, double time) { return k.Time < time; });
-  if (at != keys.end() && at->Time == t)
+  // A key at an existing time replaces it, as vtkTransformInterpolator does.
+  const lct::Status added = this->Internal->Add(key);
+  if (added != lct::Status::Ok)
   {
-    *at = key; // same time: replace, as vtkTransformInterpolator does
-  }
-  else
-  {
-    keys.insert(at, key);
-  }
-  double failedTime = t;
-  const lct::Status built = this->Internal->Build(keys, toCore(this->Parametrisation), failedTime);
-  if (built != lct::Status::Ok)
-  {
-    vtkErrorMacro(<< caller << " at t = " << t << ": the key at t = " << failedTime
-                  << " (or the step to it) has no " << lct::name(toCore(this->Parametrisation))
-                  << " logarithm (" << lct::describe(built) << "); key rejected.");
+    vtkErrorMacro(<< caller << " at t = " << t << ": the step between this key and a "
+                  << "neighbour has no real " << lct::name(toCore(this->Parametrisation))
+                  << " logarithm (" << lct::describe(added) << "); key rejected.");
     return 0;
   }
   this->Modified();
@@ -280,7 +320,7 @@ int vtkTransformInterpolatorLCT::AddTransform(double t, vtkProp3D* prop3D)
 int vtkTransformInterpolatorLCT::SetBezierControls(
   double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing)
 {
-  std::vector<Key> keys = this->Internal->Keys;
+  std::vector<Key>& keys = this->Internal->Keys;
   auto key = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
   if (key == keys.end())
   {
@@ -309,13 +349,7 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
   {
     key->Outgoing = RowMajor4(Eigen::Map<const RowMajor4>(outgoing->GetData()));
   }
-  double failedTime = t;
-  if (this->Internal->Build(keys, toCore(this->Parametrisation), failedTime) != lct::Status::Ok)
-  {
-    vtkErrorMacro(<< "SetBezierControls(t = " << t << "): the keys no longer have logarithms; "
-                  << "unchanged.");
-    return 0;
-  }
+  this->Internal->KeysChanged();
   this->Modified();
   return 1;
 }
@@ -323,18 +357,15 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::RemoveTransform(double t)
 {
-  std::vector<Key> keys = this->Internal->Keys;
-  const auto end =
-    std::remove_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
-  if (end == keys.end())
+  const std::vector<Key>& keys = this->Internal->Keys;
+  const auto at = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
+  if (at == keys.end())
   {
     return;
   }
-  keys.erase(end, keys.end());
-  double unused;
-  // Removing a key cannot create a missing log in Polar; in MatrixLog it can bring keys
-  // farther apart into one curve point, so check.
-  if (this->Internal->Build(keys, toCore(this->Parametrisation), unused) != lct::Status::Ok)
+  // Removing a key cannot create a missing log in Polar; in MatrixLog its two neighbours may
+  // have none between them, so check.
+  if (this->Internal->Remove(static_cast<int>(at - keys.begin())) != lct::Status::Ok)
   {
     vtkErrorMacro(<< "RemoveTransform(" << t << "): the remaining keys have no common "
                   << lct::name(toCore(this->Parametrisation)) << " logarithms; not removed.");
@@ -357,8 +388,7 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
     return 1;
   }
   double failedTime = 0.0;
-  const std::vector<Key> keys = this->Internal->Keys;
-  const lct::Status built = this->Internal->Build(keys, toCore(parametrisation), failedTime);
+  const lct::Status built = this->Internal->Rebuild(toCore(parametrisation), failedTime);
   if (built != lct::Status::Ok)
   {
     vtkErrorMacro(<< "SetParametrisation: the key at t = " << failedTime << " has no "
@@ -374,7 +404,7 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
 //------------------------------------------------------------------------------
 bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
 {
-  const Internals& in = *this->Internal;
+  Internals& in = *this->Internal;
   const int n = static_cast<int>(in.Keys.size());
   if (n == 0)
   {
@@ -387,6 +417,7 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
     return false;
   }
   const lct::CurveScheme scheme = toScheme(this->InterpolationType);
+  const lct::KeyLogs& logs = scheme == lct::CurveScheme::Bezier ? in.Bezier() : in.KeyLogs;
   if (scheme == lct::CurveScheme::Bezier && in.BezierStatus != lct::Status::Ok)
   {
     vtkErrorMacro(<< "InterpolateTransform(" << t << "): the Bezier control transforms near the "
@@ -395,7 +426,6 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << lct::describe(in.BezierStatus) << "); output unchanged.");
     return false;
   }
-  const lct::KeyLogs& logs = scheme == lct::CurveScheme::Bezier ? in.BezierLogs : in.KeyLogs;
   const lct::CurveWeights w = lct::curveWeights(scheme, in.Times.data(), n, t);
   Eigen::Matrix4d result;
   const lct::Status status =

@@ -1,18 +1,28 @@
 /**
  * @file KeyLogs.h
- * @brief The logs of a sequence of keys, computed once, so that every point of a curve through
- *        them is one weighted sum and one exp (Alexa §5; Hawkins & Grimm eq. 7).
+ * @brief The logs of a sequence of keys, kept up to date as keys come and go, so that every point
+ *        of a curve through them is one weighted sum and one exp (Alexa §5; Hawkins & Grimm
+ *        eq. 7).
  *
- * For keys M_0 .. M_(n-1) it keeps log(M_i M_r^-1) for |i - r| <= kReach (the relative form)
- * and the absolute logs log M_i, each on the rotation branch nearest to its predecessor's
- * (Kaji & Ochiai Algorithm 1). Given curve weights w (lct/Curves.h):
+ * For keys M_0 .. M_(n-1) it keeps log(M_r^-1 M_i) for |i - r| <= kReach (the relative form, in
+ * the reference key's own frame) and the absolute logs log M_i, each on the rotation branch
+ * nearest to its predecessor's (Kaji & Ochiai Algorithm 1). Given curve weights w summing to 1
+ * (lct/Curves.h):
  *
- * - combineRelative: exp(sum_i w_i log(M_i M_r^-1)) M_r with M_r the point of largest weight.
- *   The result depends on r (only the matrix log of two keys is reference-free), so where the
- *   two largest weights cross it would jump. Within a weight gap of kHandOver the results about
- *   both are blended along the short geodesic between them, (R_b R_a^-1)^s R_a, with a
+ * - combineRelative: M_r exp(sum_i w_i log(M_r^-1 M_i)) with M_r the point of largest weight.
+ *   Hawkins & Grimm put the reference on the other side (their matrices map world to camera);
+ *   for maps to the world, the reference's own frame is the one in which the Polar translation
+ *   part of M_r^-1 M_i is A_r^-1 (t_i - t_r), so the combined translation is exactly
+ *   sum_i w_i t_i: a translation that keys share stays put (a bone keeps its length). For the
+ *   matrix log both sides give the same result. The rotation part still depends on r, so where
+ *   the two largest weights cross it would jump: within a weight gap of kHandOver the results
+ *   about both are blended along the short geodesic between them, R_a (R_a^-1 R_b)^s, with a
  *   smoothstep s that is 1/2 at the crossing: no jump, and C1.
  * - combineAbsolute: exp(sum_i w_i log M_i): reference-free, keeps the winding of spins.
+ *
+ * Keys are inserted, replaced and erased in O(kReach^2) logs (plus the absolute chain after the
+ * change, which stops as soon as a log keeps its branch), so loading n keys in time order costs
+ * O(n) logs.
  */
 #ifndef lct_KeyLogs_h
 #define lct_KeyLogs_h
@@ -24,7 +34,6 @@
 #include "lct/Status.h"
 
 #include <Eigen/Core>
-#include <Eigen/StdVector>
 
 #include <vector>
 
@@ -40,33 +49,60 @@ public:
   /// Width of the hand-over between two reference points, in weight difference.
   static constexpr double kHandOver = 0.1;
 
-  /// Computes every log of `matrices` in parametrisation p. Fails (and keeps the previous
-  /// state) when a key has no log or, with `neighboursMustCombine`, two neighbours have none
-  /// between them; `failed` then receives the index of the offending key.
+  explicit KeyLogs(Parametrisation p = Parametrisation::Polar)
+    : P(p)
+  {
+  }
+
+  /// Replaces everything by `matrices` in parametrisation p. Fails (and keeps the previous
+  /// state) when, with `neighboursMustCombine`, two neighbours have no relative log; `failed`
+  /// then receives the index of the later of the two.
   Status build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisation p,
     bool neighboursMustCombine, int* failed = nullptr);
+
+  /// Inserts m before position `index` (0 .. size()). Fails like build (state unchanged).
+  Status insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine);
+  /// Replaces the key at `index`. Fails like build (state unchanged).
+  Status replace(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine);
+  /// Removes the key at `index`. Fails like build (state unchanged) when its two neighbours
+  /// would then have no relative log.
+  Status erase(int index, bool neighboursMustCombine);
 
   std::size_t size() const { return this->Matrices.size(); }
   const Eigen::Matrix4d& matrix(std::size_t i) const { return this->Matrices[i]; }
   Parametrisation parametrisation() const { return this->P; }
 
-  /// log(M_i M_r^-1), or null when it does not exist or |i - r| > kReach.
+  /// log(M_r^-1 M_i), or null when it does not exist or |i - r| > kReach.
   const LogCoords* relative(int i, int r) const;
 
   /// The relative form about the point of largest weight, with the hand-over.
   Status combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) const;
 
-  /// The absolute form exp(sum_i w_i log M_i).
+  /// The absolute form exp(sum_i w_i log M_i). Fails with NoRealLogarithm when a key with
+  /// weight has no absolute log (MatrixLog).
   Status combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) const;
 
 private:
+  /// The relative logs of window r (entries i = r - kReach .. r + kReach) of `matrices`.
+  struct Window
+  {
+    LogCoords logs[2 * kReach + 1];
+    bool valid[2 * kReach + 1];
+  };
+  Window computeWindow(const std::vector<Eigen::Matrix4d>& matrices, int r) const;
+  /// Recomputes the windows [first, last] of `matrices` into scratch; fails when neighbours
+  /// must combine and do not.
+  Status computeWindows(const std::vector<Eigen::Matrix4d>& matrices, int first, int last,
+    bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const;
+  void commitWindows(int first, const std::vector<Window>& scratch);
+  void updateAbsoluteFrom(int index);
   Status combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const;
 
-  Parametrisation P = Parametrisation::Polar;
+  Parametrisation P;
   std::vector<Eigen::Matrix4d> Matrices;
-  std::vector<LogCoords> Relative;
-  std::vector<char> RelativeValid;
+  std::vector<Window> Windows;
   std::vector<LogCoords> Absolute;
+  std::vector<char> AbsoluteValid;
 };
 
 } // namespace lct

@@ -1,0 +1,124 @@
+// lct::KeyLogs: incremental updates equal a full rebuild; the relative form keeps translations
+// the keys share; the hand-over is symmetric.
+#include "lct/Affine.h"
+#include "lct/KeyLogs.h"
+#include "lct/SO3.h"
+
+#include "RandomTransforms.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using lct::Parametrisation;
+
+namespace
+{
+/// Evaluates both logs at many curve points and returns the largest difference.
+double maxDifference(const lct::KeyLogs& a, const lct::KeyLogs& b, const std::vector<double>& times)
+{
+  double worst = 0.0;
+  const int n = static_cast<int>(times.size());
+  for (lct::CurveScheme s : { lct::CurveScheme::Linear, lct::CurveScheme::CatmullRom,
+         lct::CurveScheme::Subdivision })
+  {
+    for (int k = 0; k <= 50; ++k)
+    {
+      const double t = times.front() + (times.back() - times.front()) * k / 50.0;
+      const lct::CurveWeights w = lct::curveWeights(s, times.data(), n, t);
+      Eigen::Matrix4d ra, rb, aa, ab;
+      EXPECT_EQ(a.combineRelative(w, ra), lct::Status::Ok);
+      EXPECT_EQ(b.combineRelative(w, rb), lct::Status::Ok);
+      EXPECT_EQ(a.combineAbsolute(w, aa), lct::Status::Ok);
+      EXPECT_EQ(b.combineAbsolute(w, ab), lct::Status::Ok);
+      worst = std::max({ worst, (ra - rb).norm(), (aa - ab).norm() });
+    }
+  }
+  return worst;
+}
+} // namespace
+
+TEST(KeyLogs, IncrementalUpdatesEqualAFullBuild)
+{
+  lct_test::RandomTransforms random(31);
+  lct::KeyLogs incremental;
+  std::vector<Eigen::Matrix4d> matrices;
+  std::vector<double> times;
+  for (int step = 0; step < 300; ++step)
+  {
+    const int n = static_cast<int>(matrices.size());
+    const double action = random.Uniform(0.0, 1.0);
+    const Eigen::Matrix4d m = random.Affine(lct_test::TransformClass::GeneralAffine);
+    if (n < 3 || action < 0.6)
+    {
+      const int index = static_cast<int>(random.Uniform(0.0, n + 0.999));
+      ASSERT_EQ(incremental.insert(index, m, true), lct::Status::Ok);
+      matrices.insert(matrices.begin() + index, m);
+    }
+    else if (action < 0.8)
+    {
+      const int index = static_cast<int>(random.Uniform(0.0, n - 0.001));
+      ASSERT_EQ(incremental.replace(index, m, true), lct::Status::Ok);
+      matrices[index] = m;
+    }
+    else
+    {
+      const int index = static_cast<int>(random.Uniform(0.0, n - 0.001));
+      ASSERT_EQ(incremental.erase(index, true), lct::Status::Ok);
+      matrices.erase(matrices.begin() + index);
+    }
+  }
+  lct::KeyLogs full;
+  ASSERT_EQ(full.build(matrices, Parametrisation::Polar, true), lct::Status::Ok);
+  ASSERT_EQ(incremental.size(), matrices.size());
+  times.resize(matrices.size());
+  for (size_t i = 0; i < times.size(); ++i)
+  {
+    times[i] = static_cast<double>(i);
+    EXPECT_EQ(incremental.matrix(i), matrices[i]);
+  }
+  EXPECT_EQ(maxDifference(incremental, full, times), 0.0);
+}
+
+TEST(KeyLogs, RelativeFormKeepsASharedTranslation)
+{
+  // A bone: keys T(1, 0, 0) Rz(0, 60, 120, 180, 240) in Polar coordinates. Every curve point keeps
+  // the translation (1, 0, 0) (in the world-frame relative form it swung out to 1.116).
+  std::vector<Eigen::Matrix4d> keys;
+  std::vector<double> times;
+  for (int k = 0; k < 5; ++k)
+  {
+    keys.push_back(lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, k * lct_test::kPi / 3)),
+      Eigen::Vector3d(1, 0, 0)));
+    times.push_back(k);
+  }
+  lct::KeyLogs logs;
+  ASSERT_EQ(logs.build(keys, Parametrisation::Polar, true), lct::Status::Ok);
+  for (lct::CurveScheme s : { lct::CurveScheme::Linear, lct::CurveScheme::CatmullRom,
+         lct::CurveScheme::BSpline, lct::CurveScheme::Subdivision })
+  {
+    for (int k = 0; k <= 400; ++k)
+    {
+      const lct::CurveWeights w = lct::curveWeights(s, times.data(), 5, k / 100.0);
+      Eigen::Matrix4d m;
+      ASSERT_EQ(logs.combineRelative(w, m), lct::Status::Ok);
+      EXPECT_LT((m.topRightCorner<3, 1>() - Eigen::Vector3d(1, 0, 0)).norm(), 1e-14);
+    }
+  }
+}
+
+TEST(KeyLogs, FailedUpdatesLeaveTheLogsUnchanged)
+{
+  // MatrixLog: a half turn with non-uniform scale next to the identity has no real log.
+  lct::KeyLogs logs(Parametrisation::MatrixLog);
+  ASSERT_EQ(logs.insert(0, Eigen::Matrix4d::Identity(), true), lct::Status::Ok);
+  Eigen::Matrix4d halfTurn = Eigen::Matrix4d::Identity();
+  halfTurn(0, 0) = -2.0;
+  halfTurn(1, 1) = -1.0;
+  EXPECT_EQ(logs.insert(1, halfTurn, true), lct::Status::NoRealLogarithm);
+  EXPECT_EQ(logs.size(), 1u);
+  Eigen::Matrix4d quarter = lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, 1.5)), Eigen::Vector3d::Zero());
+  ASSERT_EQ(logs.insert(1, quarter, true), lct::Status::Ok);
+  EXPECT_EQ(logs.replace(1, halfTurn, true), lct::Status::NoRealLogarithm);
+  EXPECT_EQ(logs.matrix(1), quarter);
+}
