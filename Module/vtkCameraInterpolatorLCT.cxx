@@ -62,6 +62,7 @@ struct Key
 {
   double Time;
   lct::CameraKey Camera;
+  Eigen::Matrix4d CameraMatrix; ///< Hawkins & Grimm's P_b S V, for METHOD_CAMERA_MATRIX
 };
 } // namespace
 
@@ -74,6 +75,27 @@ struct vtkCameraInterpolatorLCT::Internals
   std::vector<Key> Keys;
   std::vector<double> Times;
   lct::KeyLogs Orientations;
+  /// Logs of the camera matrices (MatrixLog), built on the first CameraMatrix evaluation after a
+  /// change, and why they are missing if they are.
+  bool CameraMatricesCurrent = false;
+  lct::KeyLogs CameraMatrices{ lct::Parametrisation::MatrixLog };
+  lct::Status CameraMatricesStatus = lct::Status::Ok;
+
+  const lct::KeyLogs& CameraMatrixLogs()
+  {
+    if (!this->CameraMatricesCurrent)
+    {
+      std::vector<Eigen::Matrix4d> matrices;
+      for (const Key& k : this->Keys)
+      {
+        matrices.push_back(k.CameraMatrix);
+      }
+      this->CameraMatricesStatus =
+        this->CameraMatrices.build(matrices, lct::Parametrisation::MatrixLog, true);
+      this->CameraMatricesCurrent = true;
+    }
+    return this->CameraMatrices;
+  }
 
   static Eigen::Matrix4d Orientation(const Key& key)
   {
@@ -84,6 +106,7 @@ struct vtkCameraInterpolatorLCT::Internals
 
   void KeysChanged()
   {
+    this->CameraMatricesCurrent = false;
     this->Times.resize(this->Keys.size());
     for (size_t i = 0; i < this->Keys.size(); ++i)
     {
@@ -193,7 +216,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
       return 0;
     }
   }
-  this->Internal->Add(Key{ t, key.value });
+  this->Internal->Add(Key{ t, key.value, lct::cameraMatrix(lct::fromCameraKey(key.value)) });
   this->Modified();
   return 1;
 }
@@ -214,7 +237,7 @@ void vtkCameraInterpolatorLCT::RemoveCamera(double t)
 //------------------------------------------------------------------------------
 int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
 {
-  const Internals& in = *this->Internal;
+  Internals& in = *this->Internal;
   const int n = static_cast<int>(in.Keys.size());
   if (!camera || n == 0 || std::isnan(t))
   {
@@ -245,7 +268,28 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
   }
   key.focalFrame.topRightCorner<3, 1>() = focalPoint;
   key.parallelProjection = in.Keys.front().Camera.parallelProjection;
-  toVtk(lct::fromCameraKey(key), camera);
+  lct::CameraParameters result = lct::fromCameraKey(key);
+  if (this->Method == METHOD_CAMERA_MATRIX)
+  {
+    const lct::KeyLogs& logs = in.CameraMatrixLogs();
+    Eigen::Matrix4d matrix;
+    lct::Status matrixStatus = in.CameraMatricesStatus;
+    if (matrixStatus == lct::Status::Ok)
+    {
+      matrixStatus = logs.combineRelative(w, matrix);
+    }
+    const auto fromMatrix = matrixStatus == lct::Status::Ok
+      ? lct::fromCameraMatrix(matrix, result)
+      : lct::Result<lct::CameraParameters>::failure(matrixStatus);
+    if (!fromMatrix)
+    {
+      vtkErrorMacro(<< "InterpolateCamera(" << t << "), CameraMatrix method: "
+                    << lct::describe(fromMatrix.status) << "; camera unchanged.");
+      return 0;
+    }
+    result = fromMatrix.value;
+  }
+  toVtk(result, camera);
   return 1;
 }
 
@@ -256,6 +300,8 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   static const char* const types[] = { "Linear", "Spline", "BSpline", "Subdivision" };
   os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
+  os << indent << "Method: " << (this->Method == METHOD_FOCAL_FRAME ? "FocalFrame" : "CameraMatrix")
+     << "\n";
   os << indent << "NumberOfCameras: " << this->GetNumberOfCameras() << "\n";
   if (!this->Internal->Keys.empty())
   {

@@ -120,12 +120,34 @@ public:
   vtkBooleanMacro(ConsistentRotation, vtkTypeBool);
   ///@}
 
+  enum Methods
+  {
+    METHOD_FOCAL_FRAME = 0,
+    METHOD_CAMERA_MATRIX = 1
+  };
+
+  ///@{
+  /**
+   * What is interpolated. FocalFrame (default): the decomposition described above.
+   * CameraMatrix: Hawkins & Grimm's formulation taken literally (eq. 5, 7; see lct/CameraKey.h):
+   * the matrix P_b S V (window centre, focal length and view transform together) by its matrix
+   * log relative to the key of largest weight, decomposed back by RQ; skew and anisotropy that
+   * appear in between are dropped. Offered for comparison: it moves scene points more, and a step
+   * without a real matrix log (large turns) makes InterpolateCamera fail with an error.
+   */
+  vtkSetClampMacro(Method, int, METHOD_FOCAL_FRAME, METHOD_CAMERA_MATRIX);
+  vtkGetMacro(Method, int);
+  void SetMethodToFocalFrame() { this->SetMethod(METHOD_FOCAL_FRAME); }
+  void SetMethodToCameraMatrix() { this->SetMethod(METHOD_CAMERA_MATRIX); }
+  ///@}
+
 protected:
   vtkCameraInterpolatorLCT();
   ~vtkCameraInterpolatorLCT() override;
 
   int InterpolationType = INTERPOLATION_TYPE_SPLINE;
   vtkTypeBool ConsistentRotation = false;
+  int Method = METHOD_FOCAL_FRAME;
 
 private:
   vtkCameraInterpolatorLCT(const vtkCameraInterpolatorLCT&) = delete;

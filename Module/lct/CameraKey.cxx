@@ -1,6 +1,7 @@
 #include "lct/CameraKey.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -83,6 +84,71 @@ CameraParameters fromCameraKey(const CameraKey& key)
   c.clippingRange = distance *
     Eigen::Vector2d(std::exp(ch[CameraKey::LogNear]), std::exp(ch[CameraKey::LogFar]));
   return c;
+}
+
+Eigen::Matrix4d cameraMatrix(const CameraParameters& c)
+{
+  const Eigen::Vector3d z = (c.position - c.focalPoint).normalized();
+  const Eigen::Vector3d x = c.viewUp.cross(z).normalized();
+  const Eigen::Vector3d y = z.cross(x);
+  Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
+  view.block<1, 3>(0, 0) = x.transpose();
+  view.block<1, 3>(1, 0) = y.transpose();
+  view.block<1, 3>(2, 0) = z.transpose();
+  view.topRightCorner<3, 1>() = -(view.topLeftCorner<3, 3>() * c.position);
+  const double f = 1.0 / std::tan(0.5 * c.viewAngle * kDegreesToRadians);
+  Eigen::Matrix4d intrinsic = Eigen::Matrix4d::Identity();
+  intrinsic(0, 0) = f;
+  intrinsic(1, 1) = f;
+  intrinsic(0, 2) = c.windowCenter[0];
+  intrinsic(1, 2) = c.windowCenter[1];
+  return intrinsic * view;
+}
+
+Result<CameraParameters> fromCameraMatrix(const Eigen::Matrix4d& m, const CameraParameters& rest)
+{
+  using R = Result<CameraParameters>;
+  if (!m.allFinite())
+  {
+    return R::failure(Status::NonFinite);
+  }
+  const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
+  if (!(a.determinant() > 0.0))
+  {
+    return R::failure(Status::NonPositiveDeterminant);
+  }
+  // RQ by QR of the row-reversed transpose: with J the exchange matrix, (J A)^T = Q U gives
+  // A = (J U^T J)(J Q^T) with J U^T J upper triangular.
+  Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
+  j(0, 2) = j(1, 1) = j(2, 0) = 1.0;
+  const Eigen::HouseholderQR<Eigen::Matrix3d> qr((j * a).transpose());
+  const Eigen::Matrix3d u = qr.matrixQR().triangularView<Eigen::Upper>();
+  Eigen::Matrix3d k = j * u.transpose() * j;
+  Eigen::Matrix3d rotation = j * qr.householderQ().transpose();
+  // Make the diagonal of K positive (A = K R is unchanged by D K D R with D = D^-1).
+  for (int i = 0; i < 3; ++i)
+  {
+    if (k(i, i) < 0.0)
+    {
+      k.col(i) = -k.col(i);
+      rotation.row(i) = -rotation.row(i);
+    }
+  }
+  k /= k(2, 2);
+  CameraParameters c = rest;
+  const Eigen::Vector3d position =
+    -(rotation.transpose() * k.inverse() * m.topRightCorner<3, 1>());
+  const double distance = (rest.position - rest.focalPoint).norm();
+  c.position = position;
+  c.focalPoint = position - distance * rotation.row(2).transpose();
+  c.viewUp = rotation.row(1).transpose();
+  c.viewAngle = 2.0 * std::atan(1.0 / k(1, 1)) / kDegreesToRadians;
+  c.windowCenter = Eigen::Vector2d(k(0, 2), k(1, 2));
+  if (!c.position.allFinite() || !(c.viewAngle > 0.0 && c.viewAngle < 180.0))
+  {
+    return R::failure(Status::NonFinite);
+  }
+  return { c, Status::Ok };
 }
 
 } // namespace lct

@@ -82,6 +82,22 @@ VTKLCT_EXPORT Result<CameraKey> toCameraKey(const CameraParameters& camera);
 /// The camera of a key (view up orthogonalised, as VTK renders it).
 VTKLCT_EXPORT CameraParameters fromCameraKey(const CameraKey& key);
 
+/**
+ * Hawkins & Grimm's literal formulation (eq. 5, 7), offered for comparison: the camera matrix
+ * C = P_b S V with V = [R | -R c] the view transform, S = diag(f, f, 1, 1), f = cot(view angle / 2),
+ * and P_b = [[1, 0, u0, 0], [0, 1, v0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] holding the window centre
+ * (u0, v0) (the paper's aspect and skew are 1 and 0 for a vtkCamera). The whole matrix is then
+ * interpolated by its log relative to a key; in between it generally acquires skew and anisotropy,
+ * which `fromCameraMatrix` drops (it keeps f_y) because a vtkCamera cannot show them.
+ */
+VTKLCT_EXPORT Eigen::Matrix4d cameraMatrix(const CameraParameters& camera);
+
+/// The camera of a camera matrix (RQ decomposition of its linear part), with the distance,
+/// parallel scale, view shear, clipping range and projection type taken from `rest`.
+/// Fails with NonFinite or NonPositiveDeterminant for matrices that are no camera.
+VTKLCT_EXPORT Result<CameraParameters> fromCameraMatrix(
+  const Eigen::Matrix4d& matrix, const CameraParameters& rest);
+
 } // namespace lct
 
 #endif

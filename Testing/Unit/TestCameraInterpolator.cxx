@@ -264,3 +264,55 @@ TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
   EXPECT_EQ(interpolator->AddCamera(0.0, parallel), 1);
   EXPECT_EQ(interpolator->GetNumberOfCameras(), 1);
 }
+
+TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndReportsMissingLogs)
+{
+  const auto keys = randomKeys(7, 4);
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  interpolator->SetMethodToCameraMatrix();
+  interpolator->SetInterpolationTypeToLinear();
+  // Keys turning little: the matrix log exists between neighbours.
+  lct_test::RandomTransforms random(8);
+  double time = 0.0;
+  std::vector<std::pair<double, CameraKeySpec>> used;
+  CameraKeySpec k = keys[0];
+  for (int i = 0; i < 4; ++i)
+  {
+    vtkNew<vtkCamera> c;
+    apply(k, c, false);
+    c->SetViewShear(0, 0, 1); // the matrix method keeps the key's shear channel, like the other
+    ASSERT_EQ(interpolator->AddCamera(time, c), 1);
+    used.emplace_back(time, k);
+    time += 1.0;
+    const Eigen::Matrix3d turn = random.Rotation(0.3);
+    k.position = k.focal + turn * (k.position - k.focal);
+    k.up = turn * k.up;
+    k.angle = random.Uniform(20.0, 60.0);
+  }
+  for (const auto& [t, spec] : used)
+  {
+    vtkNew<vtkCamera> expected, out;
+    apply(spec, expected, false);
+    expected->SetViewShear(0, 0, 1);
+    ASSERT_EQ(interpolator->InterpolateCamera(t, out), 1);
+    EXPECT_LT(cameraDifference(out, expected), 1e-9) << t;
+  }
+  vtkNew<vtkCamera> mid;
+  ASSERT_EQ(interpolator->InterpolateCamera(1.5, mid), 1);
+
+  // A half turn between keys: no real matrix log, reported at evaluation.
+  vtkNew<vtkCameraInterpolatorLCT> halfTurn;
+  halfTurn->SetMethodToCameraMatrix();
+  vtkNew<ErrorCounter> errors;
+  halfTurn->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> a, b;
+  a->SetPosition(0, 0, 5);
+  b->SetPosition(0, 0, -5);
+  ASSERT_EQ(halfTurn->AddCamera(0, a), 1);
+  ASSERT_EQ(halfTurn->AddCamera(1, b), 1);
+  EXPECT_EQ(halfTurn->InterpolateCamera(0.5, mid), 0);
+  EXPECT_EQ(errors->Count, 1);
+  // The default method has no such failure.
+  halfTurn->SetMethodToFocalFrame();
+  EXPECT_EQ(halfTurn->InterpolateCamera(0.5, mid), 1);
+}
