@@ -10,20 +10,21 @@
 namespace lct
 {
 
-KeyLogs::Window KeyLogs::computeWindow(const std::vector<Eigen::Matrix4d>& matrices, int r) const
+KeyLogs::Window KeyLogs::computeWindow(
+  const std::vector<Eigen::Matrix4d>& slice, int offset, int r) const
 {
   Window w;
-  const int n = static_cast<int>(matrices.size());
-  const Eigen::Matrix4d inverse = inverseAffine(matrices[r]);
+  const int end = offset + static_cast<int>(slice.size());
+  const Eigen::Matrix4d inverse = inverseAffine(slice[r - offset]);
   for (int slot = 0; slot <= 2 * kReach; ++slot)
   {
     const int i = r + slot - kReach;
     w.valid[slot] = false;
-    if (i < 0 || i >= n)
+    if (i < offset || i >= end)
     {
       continue;
     }
-    const auto l = logarithm(inverse * matrices[i], this->P);
+    const auto l = logarithm(inverse * slice[i - offset], this->P);
     if (l)
     {
       w.logs[slot] = l.value;
@@ -33,19 +34,17 @@ KeyLogs::Window KeyLogs::computeWindow(const std::vector<Eigen::Matrix4d>& matri
   return w;
 }
 
-Status KeyLogs::computeWindows(const std::vector<Eigen::Matrix4d>& matrices, int first, int last,
-  bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const
+Status KeyLogs::computeWindows(const std::vector<Eigen::Matrix4d>& slice, int offset, int first,
+  int last, bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const
 {
-  const int n = static_cast<int>(matrices.size());
-  first = std::max(first, 0);
-  last = std::min(last, n - 1);
+  const int end = offset + static_cast<int>(slice.size());
   scratch.clear();
   for (int r = first; r <= last; ++r)
   {
-    scratch.push_back(this->computeWindow(matrices, r));
+    scratch.push_back(this->computeWindow(slice, offset, r));
     // MatrixLog only: a step without real log. Fatal between neighbours when asked (no curve
     // could join them); farther apart it matters only if a curve point combines the two.
-    if (neighboursMustCombine && r + 1 < n && !scratch.back().valid[kReach + 1])
+    if (neighboursMustCombine && r + 1 < end && !scratch.back().valid[kReach + 1])
     {
       if (failed)
       {
@@ -59,7 +58,6 @@ Status KeyLogs::computeWindows(const std::vector<Eigen::Matrix4d>& matrices, int
 
 void KeyLogs::commitWindows(int first, const std::vector<Window>& scratch)
 {
-  first = std::max(first, 0);
   for (std::size_t k = 0; k < scratch.size(); ++k)
   {
     this->Windows[first + k] = scratch[k];
@@ -93,7 +91,7 @@ Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisat
   KeyLogs next(p);
   std::vector<Window> scratch;
   const Status status = next.computeWindows(
-    matrices, 0, static_cast<int>(matrices.size()) - 1, neighboursMustCombine, scratch, failed);
+    matrices, 0, 0, static_cast<int>(matrices.size()) - 1, neighboursMustCombine, scratch, failed);
   if (status != Status::Ok)
   {
     return status;
@@ -107,61 +105,73 @@ Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisat
   return Status::Ok;
 }
 
-Status KeyLogs::insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine)
+Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine)
 {
-  std::vector<Eigen::Matrix4d> matrices = this->Matrices;
-  matrices.insert(matrices.begin() + index, m);
+  const int n = static_cast<int>(this->Matrices.size());
+  const int size = n + (kind == Edit::Insert ? 1 : 0) - (kind == Edit::Erase ? 1 : 0);
+  // The key at position i of the edited sequence.
+  auto edited = [&](int i) -> const Eigen::Matrix4d& {
+    if (i == index && kind != Edit::Erase)
+    {
+      return *m;
+    }
+    return this->Matrices[(i > index || (i == index && kind == Edit::Erase))
+        ? i + (kind == Edit::Insert ? -1 : kind == Edit::Erase ? 1 : 0)
+        : i];
+  };
+  // Only the windows within reach of the edit change; they read keys within reach of them.
+  const int first = std::max(0, index - kReach);
+  const int last = std::min(size - 1, index + kReach - (kind == Edit::Erase ? 1 : 0));
+  const int sliceBegin = std::max(0, first - kReach);
+  const int sliceEnd = std::min(size, last + kReach + 1);
+  std::vector<Eigen::Matrix4d> slice;
+  for (int i = sliceBegin; i < sliceEnd; ++i)
+  {
+    slice.push_back(edited(i));
+  }
   std::vector<Window> scratch;
   const Status status = this->computeWindows(
-    matrices, index - kReach, index + kReach, neighboursMustCombine, scratch, nullptr);
+    slice, sliceBegin, first, last, neighboursMustCombine, scratch, nullptr);
   if (status != Status::Ok)
   {
     return status;
   }
-  this->Matrices.swap(matrices);
-  this->Windows.insert(this->Windows.begin() + index, Window());
-  this->commitWindows(index - kReach, scratch);
-  this->Absolute.insert(this->Absolute.begin() + index, LogCoords::Zero());
-  this->AbsoluteValid.insert(this->AbsoluteValid.begin() + index, 0);
+  switch (kind)
+  {
+    case Edit::Insert:
+      this->Matrices.insert(this->Matrices.begin() + index, *m);
+      this->Windows.insert(this->Windows.begin() + index, Window());
+      this->Absolute.insert(this->Absolute.begin() + index, LogCoords::Zero());
+      this->AbsoluteValid.insert(this->AbsoluteValid.begin() + index, 0);
+      break;
+    case Edit::Replace:
+      this->Matrices[index] = *m;
+      break;
+    case Edit::Erase:
+      this->Matrices.erase(this->Matrices.begin() + index);
+      this->Windows.erase(this->Windows.begin() + index);
+      this->Absolute.erase(this->Absolute.begin() + index);
+      this->AbsoluteValid.erase(this->AbsoluteValid.begin() + index);
+      break;
+  }
+  this->commitWindows(first, scratch);
   this->updateAbsoluteFrom(index);
   return Status::Ok;
+}
+
+Status KeyLogs::insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine)
+{
+  return this->edit(Edit::Insert, index, &m, neighboursMustCombine);
 }
 
 Status KeyLogs::replace(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine)
 {
-  std::vector<Eigen::Matrix4d> matrices = this->Matrices;
-  matrices[index] = m;
-  std::vector<Window> scratch;
-  const Status status = this->computeWindows(
-    matrices, index - kReach, index + kReach, neighboursMustCombine, scratch, nullptr);
-  if (status != Status::Ok)
-  {
-    return status;
-  }
-  this->Matrices.swap(matrices);
-  this->commitWindows(index - kReach, scratch);
-  this->updateAbsoluteFrom(index);
-  return Status::Ok;
+  return this->edit(Edit::Replace, index, &m, neighboursMustCombine);
 }
 
 Status KeyLogs::erase(int index, bool neighboursMustCombine)
 {
-  std::vector<Eigen::Matrix4d> matrices = this->Matrices;
-  matrices.erase(matrices.begin() + index);
-  std::vector<Window> scratch;
-  const Status status = this->computeWindows(
-    matrices, index - kReach, index + kReach - 1, neighboursMustCombine, scratch, nullptr);
-  if (status != Status::Ok)
-  {
-    return status;
-  }
-  this->Matrices.swap(matrices);
-  this->Windows.erase(this->Windows.begin() + index);
-  this->commitWindows(index - kReach, scratch);
-  this->Absolute.erase(this->Absolute.begin() + index);
-  this->AbsoluteValid.erase(this->AbsoluteValid.begin() + index);
-  this->updateAbsoluteFrom(index);
-  return Status::Ok;
+  return this->edit(Edit::Erase, index, nullptr, neighboursMustCombine);
 }
 
 const LogCoords* KeyLogs::relative(int i, int r) const

@@ -89,11 +89,20 @@ private:
     LogCoords logs[2 * kReach + 1];
     bool valid[2 * kReach + 1];
   };
-  Window computeWindow(const std::vector<Eigen::Matrix4d>& matrices, int r) const;
-  /// Recomputes the windows [first, last] of `matrices` into scratch; fails when neighbours
-  /// must combine and do not.
-  Status computeWindows(const std::vector<Eigen::Matrix4d>& matrices, int first, int last,
-    bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const;
+  /// `slice` holds the keys offset .. offset + slice.size() - 1 of the sequence.
+  Window computeWindow(const std::vector<Eigen::Matrix4d>& slice, int offset, int r) const;
+  /// Computes the windows first .. last (which must read only keys inside the slice) into
+  /// scratch; fails when neighbours must combine and do not.
+  Status computeWindows(const std::vector<Eigen::Matrix4d>& slice, int offset, int first,
+    int last, bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const;
+  enum class Edit
+  {
+    Insert,
+    Replace,
+    Erase
+  };
+  /// Applies an edit, recomputing only the windows within reach of it; unchanged on failure.
+  Status edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine);
   void commitWindows(int first, const std::vector<Window>& scratch);
   void updateAbsoluteFrom(int index);
   Status combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const;
