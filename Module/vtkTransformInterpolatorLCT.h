@@ -6,13 +6,14 @@
  * A drop-in replacement for vtkTransformInterpolator with the same method names. Where VTK's
  * class splits each key into translation, quaternion and a diagonal scale (so keys with shear or
  * scale along rotated axes are not reproduced), this one interpolates the log coordinates of the
- * whole matrix: every output is exp(sum_i w_i log(K_i K_r^-1)) K_r, one weighted sum and one exp,
+ * whole matrix: every output is K_r exp(sum_i w_i log(K_r^-1 K_i)), one weighted sum and one exp,
  * with the weights w_i of the chosen curve scheme and K_r the key of largest weight (the relative
- * form of Hawkins & Grimm eq. 7, so rotations between neighbouring keys take the short way and
- * both logarithms stay near the identity, where they are best conditioned). The result depends
- * on the reference key, so where the two largest weights cross, the results about both are
- * blended along the short geodesic between them (a smoothstep over a weight gap of 0.1): the
- * curve has no jump there and stays C1.
+ * form of Hawkins & Grimm eq. 7, taken in the reference key's frame so that a translation the
+ * keys share stays put: a bone keeps its length). Rotations between neighbouring keys take the
+ * short way and the logarithms stay near the identity, where they are best conditioned. The
+ * result depends on the reference key, so where the two largest weights cross, the results about
+ * both are blended along the short geodesic between them (a smoothstep over a weight gap of 0.1):
+ * the curve has no jump there and stays C1. See lct/KeyLogs.h.
  *
  * Interpolation types: Linear, Spline (interpolating C1 Catmull-Rom on the key times, VTK's
  * default), BSpline (approximating cubic, through the end keys), Subdivision (the 4-point
@@ -27,7 +28,8 @@
  * ConsistentRotation (off by default): combine the absolute log coordinates of the keys, each
  * taken on the rotation branch nearest to the previous key's (Kaji & Ochiai Algorithm 1), so a
  * key sequence that spins (0, 170, 340, 510 degrees) keeps spinning instead of taking the short
- * way between keys.
+ * way between keys. Meant for spins: over hundreds of keys the absolute rotation vectors wind up
+ * far from the identity, where log-space blending distorts (measured on motion capture).
  *
  * Keys are copied when added and their logs computed then, once; an AddTransform at an existing
  * time replaces that key (as VTK does). InterpolateTransform clamps t to [GetMinimumT(),

@@ -1,0 +1,756 @@
+// Keyframe reduction of real motion capture: how well does each transform interpolator rebuild a
+// CMU BVH recording from every k-th frame?
+//
+// For each file and k in {4, 8, 16, 32}: every animated joint gets one interpolator per method,
+// holding that joint's local transform (BVH.h) at frames 0, k, 2k, ... and the last frame (key
+// time = frame index). The frames are interpolated back, forward kinematics gives the joint world
+// positions, and the error is the distance to the recorded positions in % of the skeleton height
+// (max over frames of the y extent of the joints), over all joints (End Sites included) and the
+// evaluated frames: mean and max. Also measured: the time to load the keys (AddTransform, plus
+// the first InterpolateTransform, where vtkTransformInterpolator builds its curves) and the time
+// per InterpolateTransform call (including reading the 4x4 out). Sanity checks: FK against a
+// vtkTransform chain, every frame a key (on a clip), error at the key frames. Plain program (no
+// Google Benchmark): prints markdown.
+//
+// Sampling: every s-th frame is evaluated (0, s, 2s, ...; the same frames for every method and
+// k). s must be odd, so that the evaluated frames fall at every position within the key
+// intervals of every k (an even s would, e.g. for s = 4, only see the keys at k = 4). The
+// default keeps a run under a minute on two shared cores; --stride 1 evaluates every frame. Most
+// of the run time is loading the keys (independent of s).
+//
+// Data: /usr/share/assimp/models/BVH (Debian package assimp-testmodels); without it, prints
+// "skipped" and exits 0. Usage: BenchMotionCapture [--stride S] [BVH directory]; --benchmark_*
+// flags (scripts/bench passes them to every Bench* program) are ignored.
+#include "BVH.h"
+#include "vtkTransformInterpolatorLCT.h"
+
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+#include <vtkTransform.h>
+#include <vtkTransformInterpolator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using lct_bench::BVHMotion;
+using lct_bench::Matrix4;
+using Clock = std::chrono::steady_clock;
+
+const int kSteps[] = { 4, 8, 16, 32 };
+constexpr int kStepCount = 4;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Methods
+
+enum class Library
+{
+  VTK,
+  LCT
+};
+
+struct Method
+{
+  const char* name;
+  Library library;
+  int type; // the library's interpolation type enum
+  bool consistentRotation = false;
+  bool matrixLog = false;
+  bool interpolating = true; // passes through the keys
+};
+
+const Method kMethods[] = {
+  { "VTK Linear", Library::VTK, vtkTransformInterpolator::INTERPOLATION_TYPE_LINEAR },
+  { "VTK Spline (default)", Library::VTK, vtkTransformInterpolator::INTERPOLATION_TYPE_SPLINE },
+  { "LCT Linear", Library::LCT, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_LINEAR },
+  { "LCT Spline (default)", Library::LCT, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE },
+  { "LCT BSpline (approximating)", Library::LCT,
+    vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE, false, false, false },
+  { "LCT Subdivision", Library::LCT, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION },
+  { "LCT Spline ConsistentRotation", Library::LCT,
+    vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE, true, false },
+  { "LCT Spline MatrixLog", Library::LCT, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
+    false, true },
+};
+constexpr int kMethodCount = static_cast<int>(sizeof(kMethods) / sizeof(kMethods[0]));
+// Rows used by name: the every-frame sanity check and the goal check.
+constexpr int kLctLinear = 2;
+constexpr int kLctSpline = 3;
+constexpr int kLctSubdivision = 5;
+
+/// One interpolator per animated joint, behind a uniform interface.
+class JointInterpolators
+{
+public:
+  JointInterpolators(const Method& method, int count)
+    : M(method)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      // A fresh interpolator per joint, configured before any key is added (VTK 9.1 misbehaves
+      // on the first call after switching types on a used interpolator).
+      if (method.library == Library::VTK)
+      {
+        auto v = vtkSmartPointer<vtkTransformInterpolator>::New();
+        v->SetInterpolationType(method.type);
+        this->Vtk.push_back(v);
+      }
+      else
+      {
+        auto l = vtkSmartPointer<vtkTransformInterpolatorLCT>::New();
+        l->SetInterpolationType(method.type);
+        l->SetConsistentRotation(method.consistentRotation);
+        if (method.matrixLog)
+        {
+          l->SetParametrisationToMatrixLog(); // cannot fail without keys
+        }
+        this->Lct.push_back(l);
+      }
+    }
+  }
+
+  void Add(int joint, double t, vtkMatrix4x4* key)
+  {
+    if (this->M.library == Library::VTK)
+    {
+      this->Vtk[joint]->AddTransform(t, key);
+    }
+    else if (!this->Lct[joint]->AddTransform(t, key))
+    {
+      this->RejectedKeys.emplace_back(joint, t);
+    }
+  }
+
+  void Evaluate(int joint, double t, Matrix4& out)
+  {
+    const double* data;
+    if (this->M.library == Library::VTK)
+    {
+      this->Vtk[joint]->InterpolateTransform(t, this->VtkOut);
+      data = this->VtkOut->GetMatrix()->GetData();
+    }
+    else
+    {
+      if (!this->Lct[joint]->InterpolateTransform(t, this->LctOut.Get()))
+      {
+        ++this->FailedEvaluations; // the output keeps its previous value
+      }
+      data = this->LctOut->GetData();
+    }
+    std::copy(data, data + 16, out.begin());
+  }
+
+  std::vector<std::pair<int, double>> RejectedKeys; ///< (joint, time), LCT only
+  long FailedEvaluations = 0;                       ///< LCT only
+
+private:
+  const Method& M;
+  std::vector<vtkSmartPointer<vtkTransformInterpolator>> Vtk;
+  std::vector<vtkSmartPointer<vtkTransformInterpolatorLCT>> Lct;
+  vtkNew<vtkTransform> VtkOut;
+  vtkNew<vtkMatrix4x4> LctOut;
+};
+
+// ---------------------------------------------------------------------------------------------
+// A recording, with its ground truth
+
+struct Recording
+{
+  std::string name;
+  BVHMotion motion;
+  std::vector<int> animated;     ///< joints with channels (the interpolated ones)
+  std::vector<Matrix4> locals;   ///< frame x joint, recorded local transforms
+  std::vector<double> positions; ///< frame x joint x 3, recorded world positions
+  double height = 0.0;           ///< max over frames of (max y - min y) of the joint positions
+  bool droppedRestPose = false;  ///< frame 0 was a rest pose and was dropped
+
+  int Joints() const { return static_cast<int>(this->motion.joints.size()); }
+  const Matrix4& Local(int frame, int joint) const
+  {
+    return this->locals[static_cast<std::size_t>(frame) * this->Joints() + joint];
+  }
+  const double* Positions(int frame) const
+  {
+    return this->positions.data() + static_cast<std::size_t>(frame) * 3 * this->Joints();
+  }
+};
+
+/// Largest joint displacement between consecutive frames: (frame 0 -> 1, any later pair).
+std::pair<double, double> LargestJumps(const BVHMotion& m)
+{
+  const int n = static_cast<int>(m.joints.size());
+  std::vector<Matrix4> local(n), world;
+  std::vector<double> p, previous;
+  double first = 0.0, rest = 0.0;
+  for (int f = 0; f < m.frameCount; ++f)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      local[j] = lct_bench::LocalTransform(m, j, m.Frame(f));
+    }
+    lct_bench::ForwardKinematics(m, local, world, p);
+    for (int j = 0; f > 0 && j < n; ++j)
+    {
+      const double d = std::hypot(p[3 * j] - previous[3 * j], p[3 * j + 1] - previous[3 * j + 1],
+        p[3 * j + 2] - previous[3 * j + 2]);
+      double& largest = (f == 1) ? first : rest;
+      largest = std::max(largest, d);
+    }
+    previous.swap(p);
+  }
+  return { first, rest };
+}
+
+/// The cgspeed CMU conversions start with a reference pose (near T-pose) that is not part of the
+/// motion: frame 0 -> 1 jumps by half the height. Drops frame 0 when that jump is more than 4x
+/// the largest frame-to-frame jump of the rest of the recording; returns whether it did.
+bool DropLeadingRestPose(BVHMotion& m)
+{
+  if (m.frameCount <= 3)
+  {
+    return false;
+  }
+  const auto jumps = LargestJumps(m);
+  if (jumps.first <= 4.0 * jumps.second)
+  {
+    return false;
+  }
+  m.values.erase(m.values.begin(), m.values.begin() + m.channelCount);
+  --m.frameCount;
+  return true;
+}
+
+bool Prepare(const std::string& path, Recording& rec, std::string& message)
+{
+  lct_bench::BVHResult parsed = lct_bench::LoadBVH(path);
+  if (!parsed.Ok())
+  {
+    message = parsed.error;
+    return false;
+  }
+  message = parsed.warning;
+  rec.name = std::filesystem::path(path).stem().string();
+  rec.motion = std::move(parsed.motion);
+  rec.droppedRestPose = DropLeadingRestPose(rec.motion);
+  const BVHMotion& m = rec.motion;
+  if (m.frameCount < 2)
+  {
+    message = path + ": fewer than two frames";
+    return false;
+  }
+  const int n = rec.Joints();
+  for (int j = 0; j < n; ++j)
+  {
+    if (!m.joints[j].channels.empty())
+    {
+      rec.animated.push_back(j);
+    }
+  }
+  rec.locals.resize(static_cast<std::size_t>(m.frameCount) * n);
+  rec.positions.resize(static_cast<std::size_t>(m.frameCount) * 3 * n);
+  std::vector<Matrix4> local(n), world;
+  std::vector<double> p;
+  for (int f = 0; f < m.frameCount; ++f)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      local[j] = lct_bench::LocalTransform(m, j, m.Frame(f));
+    }
+    lct_bench::ForwardKinematics(m, local, world, p);
+    std::copy(local.begin(), local.end(), rec.locals.begin() + static_cast<std::size_t>(f) * n);
+    std::copy(p.begin(), p.end(), rec.positions.begin() + static_cast<std::size_t>(f) * 3 * n);
+    double lo = p[1], hi = p[1];
+    for (int j = 0; j < n; ++j)
+    {
+      lo = std::min(lo, p[3 * j + 1]);
+      hi = std::max(hi, p[3 * j + 1]);
+    }
+    rec.height = std::max(rec.height, hi - lo);
+  }
+  if (!(rec.height > 0.0))
+  {
+    message = path + ": the skeleton has zero height";
+    return false;
+  }
+  return true;
+}
+
+/// The first `frames` frames of a recording (the height stays that of the whole recording).
+Recording Clip(const Recording& rec, int frames)
+{
+  Recording clip = rec;
+  BVHMotion& m = clip.motion;
+  m.frameCount = std::min(m.frameCount, frames);
+  m.values.resize(static_cast<std::size_t>(m.frameCount) * m.channelCount);
+  clip.locals.resize(static_cast<std::size_t>(m.frameCount) * clip.Joints());
+  clip.positions.resize(static_cast<std::size_t>(m.frameCount) * 3 * clip.Joints());
+  return clip;
+}
+
+/// Max distance between the FK of BVH.h and the same chain built with vtkTransform
+/// (PreMultiply: Translate, then RotateX/Y/Z in channel order), over a few frames.
+double CheckConventionAgainstVtk(const Recording& rec)
+{
+  const BVHMotion& m = rec.motion;
+  double worst = 0.0;
+  const int n = rec.Joints();
+  for (int f : { 0, m.frameCount / 2, m.frameCount - 1 })
+  {
+    std::vector<vtkSmartPointer<vtkTransform>> world(n);
+    for (int j = 0; j < n; ++j)
+    {
+      const lct_bench::BVHJoint& joint = m.joints[j];
+      auto t = vtkSmartPointer<vtkTransform>::New();
+      t->PreMultiply();
+      if (joint.parent >= 0)
+      {
+        t->SetMatrix(world[joint.parent]->GetMatrix());
+      }
+      double p[3] = { joint.offset[0], joint.offset[1], joint.offset[2] };
+      for (std::size_t c = 0; c < joint.channels.size(); ++c)
+      {
+        const int axis = static_cast<int>(joint.channels[c]);
+        if (axis < 3)
+        {
+          p[axis] += m.Frame(f)[joint.firstChannel + c];
+        }
+      }
+      t->Translate(p);
+      for (std::size_t c = 0; c < joint.channels.size(); ++c)
+      {
+        const double v = m.Frame(f)[joint.firstChannel + c];
+        switch (joint.channels[c])
+        {
+          case lct_bench::BVHChannel::Xrotation:
+            t->RotateX(v);
+            break;
+          case lct_bench::BVHChannel::Yrotation:
+            t->RotateY(v);
+            break;
+          case lct_bench::BVHChannel::Zrotation:
+            t->RotateZ(v);
+            break;
+          default:
+            break;
+        }
+      }
+      world[j] = t;
+      double origin[3] = { 0, 0, 0 }, q[3];
+      t->TransformPoint(origin, q);
+      const double* r = rec.Positions(f) + 3 * j;
+      worst = std::max(worst, std::hypot(q[0] - r[0], q[1] - r[1], q[2] - r[2]));
+    }
+  }
+  return 100.0 * worst / rec.height;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The experiment
+
+constexpr int kEveryFrameClip = 400; ///< frames of the every-frame-a-key sanity check
+
+struct Stats
+{
+  double sum = 0.0;    ///< sum of errors (% of height)
+  long count = 0;      ///< errors summed (joints x frames)
+  double max = 0.0;    ///< % of height
+  double keyMax = 0.0; ///< max error at the evaluated key frames (% of height)
+  /// (animated joint, key time) refused by AddTransform
+  std::vector<std::pair<int, double>> rejected;
+  long failedEvaluations = 0;
+  double loadSeconds = 0.0; ///< AddTransform of every key + the first InterpolateTransform
+  long keys = 0;            ///< keys loaded (joints x key frames)
+  double seconds = 0.0;     ///< time in InterpolateTransform (+ reading the matrix)
+  long calls = 0;
+  long frames = 0; ///< frames evaluated
+
+  double Mean() const { return this->count ? this->sum / this->count : 0.0; }
+};
+
+/// Keys every `step`-th frame (and the last) of every animated joint; evaluates every
+/// `stride`-th frame.
+Stats Run(const Recording& rec, const Method& method, int step, int stride)
+{
+  const int n = rec.Joints();
+  const int animated = static_cast<int>(rec.animated.size());
+  const int last = rec.motion.frameCount - 1;
+  std::vector<int> keys;
+  for (int f = 0; f <= last; f += step)
+  {
+    keys.push_back(f);
+  }
+  if (keys.back() != last)
+  {
+    keys.push_back(last);
+  }
+
+  const int warnings = vtkObject::GetGlobalWarningDisplay();
+  if (method.matrixLog)
+  {
+    vtkObject::GlobalWarningDisplayOff(); // rejections are counted, not printed per key
+  }
+  Stats s;
+  std::vector<Matrix4> local(n), world;
+  std::vector<double> p;
+  for (int j = 0; j < n; ++j)
+  {
+    local[j] = rec.Local(0, j); // End Sites: constant
+  }
+
+  // Load the keys in time order, then evaluate once per joint: vtkTransformInterpolator builds
+  // its curves on the first InterpolateTransform after a change, so that call is loading too.
+  const auto loadStart = Clock::now();
+  JointInterpolators interp(method, animated);
+  vtkNew<vtkMatrix4x4> key;
+  for (int f : keys)
+  {
+    for (int a = 0; a < animated; ++a)
+    {
+      key->DeepCopy(rec.Local(f, rec.animated[a]).data());
+      interp.Add(a, f, key);
+    }
+  }
+  for (int a = 0; a < animated; ++a)
+  {
+    interp.Evaluate(a, 0.0, local[rec.animated[a]]);
+  }
+  s.loadSeconds = Seconds(loadStart);
+  s.keys = static_cast<long>(keys.size()) * animated;
+
+  for (int f = 0; f <= last; f += stride)
+  {
+    const bool isKey = f % step == 0 || f == last;
+    const auto t0 = Clock::now();
+    for (int a = 0; a < animated; ++a)
+    {
+      interp.Evaluate(a, f, local[rec.animated[a]]);
+    }
+    s.seconds += Seconds(t0);
+    s.calls += animated;
+    ++s.frames;
+    lct_bench::ForwardKinematics(rec.motion, local, world, p);
+    const double* r = rec.Positions(f);
+    for (int j = 0; j < n; ++j)
+    {
+      const double e = 100.0 / rec.height *
+        std::hypot(p[3 * j] - r[3 * j], p[3 * j + 1] - r[3 * j + 1], p[3 * j + 2] - r[3 * j + 2]);
+      s.sum += e;
+      s.max = std::max(s.max, e);
+      if (isKey)
+      {
+        s.keyMax = std::max(s.keyMax, e);
+      }
+    }
+    s.count += n;
+  }
+  s.rejected = interp.RejectedKeys;
+  s.failedEvaluations = interp.FailedEvaluations;
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output
+
+std::string Cell(double mean, double max, long rejected, long failedEvaluations)
+{
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.3f (%.3f)", mean, max);
+  std::string s = buf;
+  if (rejected > 0)
+  {
+    s += " **" + std::to_string(rejected) + " keys rejected**";
+  }
+  if (failedEvaluations > 0)
+  {
+    s += " **" + std::to_string(failedEvaluations) + " evaluations failed**";
+  }
+  return s;
+}
+
+/// Results of every method and k, for one file or aggregated over the files.
+struct Table
+{
+  double mean[kMethodCount][kStepCount] = {};
+  double max[kMethodCount][kStepCount] = {};
+  long rejected[kMethodCount][kStepCount] = {};
+  long failedEvaluations[kMethodCount][kStepCount] = {};
+  double keyMax[kMethodCount] = {};
+  double seconds[kMethodCount] = {}; ///< evaluation, all k
+  long calls[kMethodCount] = {};
+  double loadSeconds[kMethodCount] = {}; ///< loading, all k
+  long keys[kMethodCount] = {};
+
+  /// Adds a run; `weight` scales the error columns (1 for a file, 1/files for the mean).
+  void Add(int m, int i, const Stats& s, double weight)
+  {
+    this->mean[m][i] += weight * s.Mean();
+    this->max[m][i] += weight * s.max;
+    this->rejected[m][i] += static_cast<long>(s.rejected.size());
+    this->failedEvaluations[m][i] += s.failedEvaluations;
+    this->keyMax[m] = std::max(this->keyMax[m], s.keyMax);
+    this->seconds[m] += s.seconds;
+    this->calls[m] += s.calls;
+    this->loadSeconds[m] += s.loadSeconds;
+    this->keys[m] += s.keys;
+  }
+};
+
+void Print(const std::string& title, const Table& t)
+{
+  std::printf("\n### %s\n\n| method |", title.c_str());
+  for (int k : kSteps)
+  {
+    std::printf(" k=%d mean%% (max%%) |", k);
+  }
+  std::printf(" ns/call | load s (ns/key) |\n|---|");
+  for (int i = 0; i < kStepCount; ++i)
+  {
+    std::printf("---|");
+  }
+  std::printf("---|---|\n");
+  for (int m = 0; m < kMethodCount; ++m)
+  {
+    std::printf("| %s |", kMethods[m].name);
+    for (int i = 0; i < kStepCount; ++i)
+    {
+      std::printf(" %s |",
+        Cell(t.mean[m][i], t.max[m][i], t.rejected[m][i], t.failedEvaluations[m][i]).c_str());
+    }
+    std::printf(" %.0f | %.3f (%.0f) |\n", t.calls[m] ? 1e9 * t.seconds[m] / t.calls[m] : 0.0,
+      t.loadSeconds[m], t.keys[m] ? 1e9 * t.loadSeconds[m] / t.keys[m] : 0.0);
+  }
+}
+
+/// For each k: are LCT Spline (default) and LCT Subdivision at or below (within 0.5%) the best
+/// mean and the best max of all methods?
+void PrintGoal(const Table& t)
+{
+  std::printf("\nGoal check (aggregated): LCT Spline and LCT Subdivision vs the best mean and "
+              "best max of all methods, 0.5%% tolerance\n");
+  for (int i = 0; i < kStepCount; ++i)
+  {
+    int argMean = 0, argMax = 0;
+    for (int m = 1; m < kMethodCount; ++m)
+    {
+      argMean = t.mean[m][i] < t.mean[argMean][i] ? m : argMean;
+      argMax = t.max[m][i] < t.max[argMax][i] ? m : argMax;
+    }
+    const double bestMean = t.mean[argMean][i], bestMax = t.max[argMax][i];
+    std::printf("- k=%d: best mean %.3f (%s), best max %.3f (%s)\n", kSteps[i], bestMean,
+      kMethods[argMean].name, bestMax, kMethods[argMax].name);
+    for (int m : { kLctSpline, kLctSubdivision })
+    {
+      const bool meanOk = t.mean[m][i] <= bestMean * 1.005;
+      const bool maxOk = t.max[m][i] <= bestMax * 1.005;
+      std::printf("  - %s: %.3f (%.3f): mean %s, max %s\n", kMethods[m].name, t.mean[m][i],
+        t.max[m][i], meanOk ? "meets" : "MISSES", maxOk ? "meets" : "MISSES");
+    }
+  }
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const auto start = Clock::now();
+  std::string dir = "/usr/share/assimp/models/BVH";
+  int stride = 5;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--stride" && i + 1 < argc)
+    {
+      stride = std::atoi(argv[++i]);
+      if (stride < 1 || stride % 2 == 0)
+      {
+        std::fprintf(stderr, "%s: --stride must be a positive odd number\n", argv[0]);
+        return 2;
+      }
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::printf("usage: %s [--stride S (evaluate every S-th frame, S odd; default %d, 1 = all "
+                  "frames)] [BVH directory]\n",
+        argv[0], stride);
+      return 0;
+    }
+    else if (arg.rfind("--benchmark", 0) == 0)
+    {
+      // scripts/bench passes Google Benchmark flags to every Bench* program: not ours.
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      std::fprintf(stderr, "%s: unknown option %s (see --help)\n", argv[0], arg.c_str());
+      return 2;
+    }
+    else
+    {
+      dir = arg;
+    }
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+  {
+    std::printf("MotionCapture: no BVH directory %s (install the Debian package "
+                "assimp-testmodels): skipped\n",
+      dir.c_str());
+    return 0;
+  }
+  std::vector<std::string> paths;
+  for (const char* preferred : { "01_01", "01_03", "Boxing_Toes" })
+  {
+    const std::string p = dir + "/" + preferred + ".bvh";
+    if (std::filesystem::is_regular_file(p, ec))
+    {
+      paths.push_back(p);
+    }
+  }
+  if (paths.empty())
+  {
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    {
+      if (entry.path().extension() == ".bvh")
+      {
+        paths.push_back(entry.path().string());
+      }
+    }
+    std::sort(paths.begin(), paths.end());
+  }
+  std::vector<Recording> recordings;
+  for (const std::string& path : paths)
+  {
+    Recording rec;
+    std::string message;
+    if (Prepare(path, rec, message))
+    {
+      if (!message.empty())
+      {
+        std::printf("note: %s: %s\n", path.c_str(), message.c_str());
+      }
+      recordings.push_back(std::move(rec));
+    }
+    else
+    {
+      std::printf("warning: %s not used: %s\n", path.c_str(), message.c_str());
+    }
+  }
+  if (recordings.empty())
+  {
+    std::printf("MotionCapture: no readable BVH file in %s: skipped\n", dir.c_str());
+    return 0;
+  }
+
+  std::printf("# Keyframe reduction of CMU motion capture (vtkTransformInterpolator vs "
+              "vtkTransformInterpolatorLCT)\n\n");
+  std::printf("- Keys: every k-th frame + the last, per joint, key time = frame index; one "
+              "interpolator per joint and method holds all of them.\n");
+  std::printf("- Error: |interpolated - recorded| joint world position after forward kinematics, "
+              "in %% of the skeleton height = max over frames of (max y - min y) of the joint "
+              "positions; mean over all joints (End Sites included) and evaluated frames (max).\n");
+  const std::string evaluated = stride == 1
+    ? std::string("all")
+    : "every " + std::to_string(stride) + "-th (--stride 1 for all)";
+  std::printf("- Evaluated frames: %s, the same for every method and k.\n", evaluated.c_str());
+  std::printf("- ns/call: per InterpolateTransform call incl. reading the 4x4 out (VTK: into a "
+              "vtkTransform, then GetMatrix), all k pooled. load: AddTransform of every key in "
+              "time order + the first InterpolateTransform per joint (VTK builds its curves "
+              "then), summed over the files and k; ns per (joint, key).\n\n");
+  std::printf("| file | frames | joints (animated) | height |\n|---|---|---|---|\n");
+  for (const Recording& rec : recordings)
+  {
+    std::printf("| %s | %d%s | %d (%zu) | %.3f |\n", rec.name.c_str(), rec.motion.frameCount,
+      rec.droppedRestPose ? " (rest-pose frame 0 dropped)" : "", rec.Joints(), rec.animated.size(),
+      rec.height);
+  }
+  std::fflush(stdout);
+
+  std::printf("\n### Sanity checks\n\n");
+  for (const Recording& rec : recordings)
+  {
+    // On a clip: with a key per frame, loading would take as long as a method's whole run.
+    const Recording clip = Clip(rec, kEveryFrameClip);
+    const Stats all = Run(clip, kMethods[kLctLinear], 1, 1);
+    std::printf("- %s: BVH.h FK vs a vtkTransform chain: max %.2e %%; LCT Linear with every frame "
+                "a key (first %d frames): max error %.2e %%\n",
+      rec.name.c_str(), CheckConventionAgainstVtk(rec), clip.motion.frameCount, all.max);
+  }
+  std::fflush(stdout);
+
+  Table aggregate;
+  std::vector<Table> tables(recordings.size());
+  long framesEvaluated = 0, framesTotal = 0;
+  std::map<std::string, std::set<std::string>> rejectedJoints; // method -> file:joint
+  for (std::size_t r = 0; r < recordings.size(); ++r)
+  {
+    const Recording& rec = recordings[r];
+    for (int m = 0; m < kMethodCount; ++m)
+    {
+      for (int i = 0; i < kStepCount; ++i)
+      {
+        const Stats s = Run(rec, kMethods[m], kSteps[i], stride);
+        tables[r].Add(m, i, s, 1.0);
+        aggregate.Add(m, i, s, 1.0 / recordings.size());
+        for (const auto& rejected : s.rejected)
+        {
+          rejectedJoints[kMethods[m].name].insert(
+            rec.name + ":" + rec.motion.joints[rec.animated[rejected.first]].name);
+        }
+        if (m == 0 && i == 0)
+        {
+          framesEvaluated += s.frames;
+          framesTotal += rec.motion.frameCount;
+        }
+      }
+    }
+  }
+
+  std::printf("- max error at the evaluated key frames, all files and k (interpolating methods "
+              "should be ~0):\n");
+  for (int m = 0; m < kMethodCount; ++m)
+  {
+    std::printf("  - %s: %.2e %%%s\n", kMethods[m].name, aggregate.keyMax[m],
+      kMethods[m].interpolating ? "" : " (approximating: not expected to be 0)");
+  }
+  for (const auto& entry : rejectedJoints)
+  {
+    std::printf("- %s: keys rejected by AddTransform (no real log; the joint is interpolated "
+                "without them) on:",
+      entry.first.c_str());
+    for (const std::string& joint : entry.second)
+    {
+      std::printf(" %s", joint.c_str());
+    }
+    std::printf("\n");
+  }
+  std::printf("- frames evaluated: %ld of %ld (%.0f %%) per method and k\n", framesEvaluated,
+    framesTotal, 100.0 * framesEvaluated / framesTotal);
+
+  for (std::size_t r = 0; r < recordings.size(); ++r)
+  {
+    Print(recordings[r].name, tables[r]);
+  }
+  Print("Aggregated: mean over the files of each file's mean% (max%); failures, ns/call and "
+        "load pooled",
+    aggregate);
+  PrintGoal(aggregate);
+  std::printf("\nTotal run time: %.1f s\n", Seconds(start));
+  return 0;
+}
