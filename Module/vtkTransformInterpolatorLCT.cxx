@@ -262,7 +262,9 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
     vtkErrorMacro(<< caller << ": the key time " << t << " is not finite; key rejected.");
     return 0;
   }
-  Key key{ t, RowMajor4(Eigen::Map<const RowMajor4>(elements)) };
+  Key key;
+  key.Time = t;
+  key.Matrix = RowMajor4(Eigen::Map<const RowMajor4>(elements));
   const lct::Status valid = lct::validateAffine(key.Matrix);
   if (valid != lct::Status::Ok)
   {

@@ -10,52 +10,6 @@
 namespace lct
 {
 
-KeyLogs::Window KeyLogs::computeWindow(
-  const std::vector<Eigen::Matrix4d>& slice, int offset, int r) const
-{
-  Window w;
-  const int end = offset + static_cast<int>(slice.size());
-  const Eigen::Matrix4d inverse = inverseAffine(slice[r - offset]);
-  for (int slot = 0; slot <= 2 * kReach; ++slot)
-  {
-    const int i = r + slot - kReach;
-    w.valid[slot] = false;
-    if (i < offset || i >= end)
-    {
-      continue;
-    }
-    const auto l = logarithm(inverse * slice[i - offset], this->P);
-    if (l)
-    {
-      w.logs[slot] = l.value;
-      w.valid[slot] = true;
-    }
-  }
-  return w;
-}
-
-Status KeyLogs::computeWindows(const std::vector<Eigen::Matrix4d>& slice, int offset, int first,
-  int last, bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const
-{
-  const int end = offset + static_cast<int>(slice.size());
-  scratch.clear();
-  for (int r = first; r <= last; ++r)
-  {
-    scratch.push_back(this->computeWindow(slice, offset, r));
-    // MatrixLog only: a step without real log. Fatal between neighbours when asked (no curve
-    // could join them); farther apart it matters only if a curve point combines the two.
-    if (neighboursMustCombine && r + 1 < end && !scratch.back().valid[kReach + 1])
-    {
-      if (failed)
-      {
-        *failed = r + 1;
-      }
-      return Status::NoRealLogarithm;
-    }
-  }
-  return Status::Ok;
-}
-
 void KeyLogs::commitWindows(int first, const std::vector<Window>& scratch)
 {
   for (std::size_t k = 0; k < scratch.size(); ++k)
@@ -88,19 +42,20 @@ void KeyLogs::updateAbsoluteFrom(int index)
 Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisation p,
   bool neighboursMustCombine, int* failed)
 {
+  // Appending in order computes each relative log once.
   KeyLogs next(p);
-  std::vector<Window> scratch;
-  const Status status = next.computeWindows(
-    matrices, 0, 0, static_cast<int>(matrices.size()) - 1, neighboursMustCombine, scratch, failed);
-  if (status != Status::Ok)
+  for (std::size_t i = 0; i < matrices.size(); ++i)
   {
-    return status;
+    const Status status = next.insert(static_cast<int>(i), matrices[i], neighboursMustCombine);
+    if (status != Status::Ok)
+    {
+      if (failed)
+      {
+        *failed = static_cast<int>(i);
+      }
+      return status;
+    }
   }
-  next.Matrices = matrices;
-  next.Windows = scratch;
-  next.Absolute.resize(matrices.size());
-  next.AbsoluteValid.assign(matrices.size(), 0);
-  next.updateAbsoluteFrom(0);
   *this = std::move(next);
   return Status::Ok;
 }
@@ -109,32 +64,59 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
 {
   const int n = static_cast<int>(this->Matrices.size());
   const int size = n + (kind == Edit::Insert ? 1 : 0) - (kind == Edit::Erase ? 1 : 0);
-  // The key at position i of the edited sequence.
-  auto edited = [&](int i) -> const Eigen::Matrix4d& {
-    if (i == index && kind != Edit::Erase)
+  // The position in the old sequence of the key at position i of the edited one (-1 for an
+  // inserted key), and that key.
+  auto original = [&](int i) {
+    if (kind == Edit::Insert)
     {
-      return *m;
+      return i < index ? i : (i == index ? -1 : i - 1);
     }
-    return this->Matrices[(i > index || (i == index && kind == Edit::Erase))
-        ? i + (kind == Edit::Insert ? -1 : kind == Edit::Erase ? 1 : 0)
-        : i];
+    return (kind == Edit::Erase && i >= index) ? i + 1 : i;
   };
-  // Only the windows within reach of the edit change; they read keys within reach of them.
+  auto edited = [&](int i) -> const Eigen::Matrix4d& {
+    return (kind != Edit::Erase && i == index) ? *m : this->Matrices[original(i)];
+  };
+  // Only the windows within reach of the edit change, and in them only the entries that pair
+  // the edited key, or keys that were out of each other's reach before (erase); the others are
+  // the old logs, moved.
   const int first = std::max(0, index - kReach);
   const int last = std::min(size - 1, index + kReach - (kind == Edit::Erase ? 1 : 0));
-  const int sliceBegin = std::max(0, first - kReach);
-  const int sliceEnd = std::min(size, last + kReach + 1);
-  std::vector<Eigen::Matrix4d> slice;
-  for (int i = sliceBegin; i < sliceEnd; ++i)
-  {
-    slice.push_back(edited(i));
-  }
   std::vector<Window> scratch;
-  const Status status = this->computeWindows(
-    slice, sliceBegin, first, last, neighboursMustCombine, scratch, nullptr);
-  if (status != Status::Ok)
+  for (int r = first; r <= last; ++r)
   {
-    return status;
+    Window w;
+    const Eigen::Matrix4d inverse = inverseAffine(edited(r));
+    for (int slot = 0; slot <= 2 * kReach; ++slot)
+    {
+      const int i = r + slot - kReach;
+      w.valid[slot] = false;
+      if (i < 0 || i >= size)
+      {
+        continue;
+      }
+      const int oldR = original(r);
+      const int oldI = original(i);
+      const bool pairsEdited = kind != Edit::Erase && (r == index || i == index);
+      if (!pairsEdited && std::abs(oldI - oldR) <= kReach)
+      {
+        const Window& old = this->Windows[oldR];
+        w.valid[slot] = old.valid[oldI - oldR + kReach];
+        w.logs[slot] = old.logs[oldI - oldR + kReach];
+        continue;
+      }
+      const auto l = logarithm(inverse * edited(i), this->P);
+      if (l)
+      {
+        w.logs[slot] = l.value;
+        w.valid[slot] = true;
+      }
+    }
+    // MatrixLog only: fatal between neighbours when asked (no curve could join them).
+    if (neighboursMustCombine && r + 1 < size && !w.valid[kReach + 1])
+    {
+      return Status::NoRealLogarithm;
+    }
+    scratch.push_back(w);
   }
   switch (kind)
   {

@@ -89,12 +89,6 @@ private:
     LogCoords logs[2 * kReach + 1];
     bool valid[2 * kReach + 1];
   };
-  /// `slice` holds the keys offset .. offset + slice.size() - 1 of the sequence.
-  Window computeWindow(const std::vector<Eigen::Matrix4d>& slice, int offset, int r) const;
-  /// Computes the windows first .. last (which must read only keys inside the slice) into
-  /// scratch; fails when neighbours must combine and do not.
-  Status computeWindows(const std::vector<Eigen::Matrix4d>& slice, int offset, int first,
-    int last, bool neighboursMustCombine, std::vector<Window>& scratch, int* failed) const;
   enum class Edit
   {
     Insert,
