@@ -6,40 +6,37 @@
 //
 //   offset(i, j) * (a_i (.) A (+) b_j (.) B) * pose
 //
-// where `pose` centres, normalises and turns the model to a three-quarter view, the LCT
-// transform is a vtkLogTransform and `offset` moves the copy to its grid cell in the view
-// plane. The three are concatenated in a vtkTransform used as the actor's UserTransform.
-// Columns (a) run left to right and are coloured by a; rows (b) run bottom to top. Thin grey
-// lines mark the axes a = 0 (the column of pure b (.) B) and b = 0 (the row of pure a (.) A):
-// the copy where they cross (the centre) is the untransformed model, A is at the right end of
-// its row, B at the top of its column, A (+) B in the top right corner and the inverses
-// (-1) (.) A, (-1) (.) B at the left and bottom ends.
+// where `pose` (SceneModel::MakePose, Examples/SceneModel.h) centres, normalises and turns the
+// model to a three-quarter view, the LCT transform is a vtkLogTransform and `offset` moves the
+// copy to its grid cell in the view plane. The three are concatenated in a vtkTransform used as
+// the actor's UserTransform. Columns (a) run left to right and are coloured by a; rows (b) run
+// bottom to top. Thin grey lines mark the axes a = 0 (the column of pure b (.) B) and b = 0
+// (the row of pure a (.) A): the copy where they cross (the centre) is the untransformed model,
+// A is at the right end of its row, B at the top of its column, A (+) B in the top right corner
+// and the inverses (-1) (.) A, (-1) (.) B at the left and bottom ends.
 //
 // Header-only: everything is `inline`. The scene needs VTK::IOPLY, VTK::IOGeometry,
 // VTK::FiltersSources, VTK::RenderingCore (and an OpenGL2 render window to draw it).
 #ifndef TransformSpaceScene_h
 #define TransformSpaceScene_h
 
+#include "SceneModel.h"
 #include "vtkLogTransform.h"
 
 #include "vtkActor.h"
-#include "vtkArrowSource.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkLineSource.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -61,88 +58,6 @@ inline double WeightA(int i)
 inline double WeightB(int j)
 {
   return -1.0 + 0.5 * j;
-}
-
-/// Mesh files tried in order (Debian package assimp-testmodels).
-inline const char* const* ModelFiles()
-{
-  static const char* const files[] = { "/usr/share/assimp/models/PLY/Wuson.ply",
-    "/usr/share/assimp/models/STL/Wuson.stl", nullptr };
-  return files;
-}
-
-inline bool FileReadable(const std::string& name)
-{
-  std::ifstream f(name, std::ios::binary);
-  return f.good();
-}
-
-/**
- * The model: the Wuson mesh from assimp-testmodels, or, when it is not installed, an arrow
- * (which still shows orientation; the image then differs from the test baseline).
- * `source` receives a description of what was loaded.
- */
-inline vtkSmartPointer<vtkPolyData> LoadModel(std::string* source = nullptr)
-{
-  for (const char* const* f = ModelFiles(); *f; ++f)
-  {
-    const std::string name = *f;
-    if (!FileReadable(name))
-    {
-      continue;
-    }
-    vtkSmartPointer<vtkPolyData> mesh;
-    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".ply") == 0)
-    {
-      vtkNew<vtkPLYReader> reader;
-      reader->SetFileName(name.c_str());
-      reader->Update();
-      mesh = reader->GetOutput();
-    }
-    else
-    {
-      vtkNew<vtkSTLReader> reader;
-      reader->SetFileName(name.c_str());
-      reader->Update();
-      mesh = reader->GetOutput();
-    }
-    if (mesh && mesh->GetNumberOfCells() > 0)
-    {
-      if (source)
-      {
-        *source = name;
-      }
-      return mesh;
-    }
-  }
-  std::cerr << "TransformSpaceScene: no model file found (install assimp-testmodels for "
-            << ModelFiles()[0] << "); using an arrow instead.\n";
-  vtkNew<vtkArrowSource> arrow;
-  arrow->SetTipResolution(24);
-  arrow->SetShaftResolution(24);
-  arrow->Update();
-  if (source)
-  {
-    *source = "vtkArrowSource (fallback)";
-  }
-  return arrow->GetOutput();
-}
-
-/**
- * The pose applied to the model before the LCT transform: centre the bounding box at the
- * origin, scale its longest side to 1 and turn it to a three-quarter view.
- */
-inline void MakePose(vtkPolyData* model, vtkTransform* pose)
-{
-  double b[6];
-  model->GetBounds(b);
-  const double size = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-12 });
-  pose->Identity();
-  pose->PostMultiply();
-  pose->Translate(-0.5 * (b[0] + b[1]), -0.5 * (b[2] + b[3]), -0.5 * (b[4] + b[5]));
-  pose->Scale(1.0 / size, 1.0 / size, 1.0 / size);
-  pose->RotateY(-65.0); // the Wuson's long axis (z) towards +x, seen three-quarter
-  pose->RotateX(15.0);  // and a little from above
 }
 
 /**
@@ -198,9 +113,9 @@ inline void CellCenter(int i, int j, double c[3])
  */
 inline bool Build(vtkRenderer* renderer, std::string* source = nullptr)
 {
-  vtkSmartPointer<vtkPolyData> model = LoadModel(source);
+  vtkSmartPointer<vtkPolyData> model = SceneModel::LoadModel(source);
   vtkNew<vtkTransform> pose;
-  MakePose(model, pose);
+  SceneModel::MakePose(model, pose);
 
   vtkNew<vtkLogTransform> generatorA;
   vtkNew<vtkLogTransform> generatorB;
