@@ -25,12 +25,12 @@ namespace FigureProgram
 {
 
 /**
- * Runs a figure program: `build(renderer, size, description)` fills the renderer (returning false
- * after printing why if it cannot), which is then rendered offscreen at size x size and written to
- * argv[1]. `what` is a one-line description for the usage message.
+ * Runs a figure program: `build(window, width, description)` fills the render window (returning
+ * false after printing why if it cannot), which is then rendered offscreen at width x height and
+ * written to argv[1]. `what` is a one-line description for the usage message.
  */
-inline int Run(int argc, char* argv[], const char* name, const char* what, int size,
-  const std::function<bool(vtkRenderer*, int, std::string*)>& build)
+inline int Run(int argc, char* argv[], const char* name, const char* what, int width, int height,
+  const std::function<bool(vtkRenderWindow*, int, std::string*)>& build)
 {
   if (argc != 2)
   {
@@ -61,17 +61,15 @@ inline int Run(int argc, char* argv[], const char* name, const char* what, int s
       std::remove(out.c_str()); // leave nothing behind if rendering fails
     }
   }
-  vtkNew<vtkRenderer> renderer;
-  std::string source;
-  if (!build(renderer, size, &source))
-  {
-    return 1;
-  }
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(8);
-  window->SetSize(size, size);
-  window->AddRenderer(renderer);
+  window->SetSize(width, height);
+  std::string source;
+  if (!build(window, width, &source))
+  {
+    return 1;
+  }
   window->Render();
 
   vtkNew<vtkWindowToImageFilter> grab;
@@ -89,7 +87,7 @@ inline int Run(int argc, char* argv[], const char* name, const char* what, int s
     std::remove(out.c_str());
     return 1;
   }
-  std::cout << name << ": model " << source << "; wrote " << out << " (" << size << "x" << size
+  std::cout << name << ": model " << source << "; wrote " << out << " (" << width << "x" << height
             << ")\n";
   return 0;
 }

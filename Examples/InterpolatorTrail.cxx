@@ -14,7 +14,9 @@ int main(int argc, char* argv[])
   return FigureProgram::Run(argc, argv, "InterpolatorTrail",
     "Renders the ghost trails of vtkTransformInterpolatorLCT and vtkTransformInterpolator on the "
     "same keys to a PNG",
-    1200, [](vtkRenderer* renderer, int size, std::string* source) {
+    1200, 1200, [](vtkRenderWindow* window, int size, std::string* source) {
+      vtkNew<vtkRenderer> renderer;
+      window->AddRenderer(renderer);
       return InterpolatorTrailScene::Build(renderer, size, source);
     });
 }

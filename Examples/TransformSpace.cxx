@@ -11,7 +11,9 @@ int main(int argc, char* argv[])
 {
   return FigureProgram::Run(argc, argv, "TransformSpace",
     "Renders the space of transformations a (.) A (+) b (.) B (Alexa 2002, Fig. 1) to a PNG", 800,
-    [](vtkRenderer* renderer, int, std::string* source) {
+    800, [](vtkRenderWindow* window, int, std::string* source) {
+      vtkNew<vtkRenderer> renderer;
+      window->AddRenderer(renderer);
       return TransformSpaceScene::Build(renderer, source);
     });
 }
