@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace
@@ -128,4 +129,48 @@ TEST(InterpolatorCueLCT, NullArgumentsAndFailingPathsAreReported)
   cue->Tick(0.5, 0.1, 0.5);
   EXPECT_EQ(camera->GetPosition()[0], 1.0);
   EXPECT_EQ(errors->Count, 4); // two AddProp, the path's own error, the cue's
+}
+
+TEST(InterpolatorCueLCT, RealTimeSceneDrivesTheCamera)
+{
+  vtkNew<vtkCameraInterpolatorLCT> cameraPath;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(8.0 * std::cos(1.2 * k), 8.0 * std::sin(1.2 * k), 1.0);
+    key->SetViewUp(0, 0, 1);
+    ASSERT_EQ(cameraPath->AddCamera(k, key), 1);
+  }
+  vtkNew<vtkCamera> camera;
+  vtkNew<vtkActor> unused;
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  cue->SetCamera(camera);
+  cue->SetCameraInterpolator(cameraPath);
+  cue->SetTimeModeToNormalized();
+  cue->SetStartTime(0.0);
+  cue->SetEndTime(1.0);
+  TickRecord record;
+  record.camera = camera;
+  record.actor = unused;
+  unused->SetUserMatrix(vtkNew<vtkMatrix4x4>());
+  vtkNew<vtkCallbackCommand> tick;
+  tick->SetCallback(onTick);
+  tick->SetClientData(&record);
+  cue->AddObserver(vtkCommand::AnimationCueTickEvent, tick);
+
+  vtkNew<vtkAnimationScene> scene;
+  scene->SetModeToRealTime();
+  scene->SetStartTime(0.0);
+  scene->SetEndTime(0.2); // seconds of wall-clock time
+  scene->AddCue(cue);
+  scene->Play();
+
+  ASSERT_GE(record.cueTimes.size(), 2u);
+  for (size_t i = 0; i < record.cueTimes.size(); ++i)
+  {
+    vtkNew<vtkCamera> expected;
+    cameraPath->InterpolateCamera(2.0 * record.cueTimes[i], expected);
+    const double* p = expected->GetPosition();
+    EXPECT_LT((record.positions[i] - Eigen::Vector3d(p[0], p[1], p[2])).norm(), 1e-12);
+  }
 }
