@@ -2,19 +2,12 @@
 // and a shift of the centre of projection, shown at t = 0.25, 0.5, 0.75 (Examples/CameraFlightScene.h).
 // TestCameraFlightVTK shows the same keys through vtkCameraInterpolator, to document the difference.
 #include "../../Examples/CameraFlightScene.h"
-
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindowInteractor.h"
-
-#include <cstdlib>
-#include <iostream>
+#include "RegressionImage.h"
 
 int TestCameraFlightLCT(int argc, char* argv[])
 {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  if (!lct_regression::DisplayAvailable("TestCameraFlightLCT"))
   {
-    std::cerr << "TestCameraFlightLCT: DISPLAY is not set (run under xvfb-run -a); skipped.\n";
     return VTK_SKIP_RETURN_CODE;
   }
   vtkNew<vtkRenderWindow> renWin;
@@ -24,13 +17,5 @@ int TestCameraFlightLCT(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
-  vtkNew<vtkRenderWindowInteractor> iren;
-  iren->SetRenderWindow(renWin);
-  renWin->Render();
-  int ret = vtkRegressionTestImage(renWin);
-  if (ret == vtkRegressionTester::DO_INTERACTOR)
-  {
-    iren->Start();
-  }
-  return !ret;
+  return lct_regression::CompareWithBaseline(renWin, argc, argv);
 }

@@ -7,27 +7,14 @@
 // Testing/Data/Baseline/TestTransformInterpolatorTrail.png (made with the Wuson mesh of
 // assimp-testmodels; without it the scene falls back to an arrow and the image test fails).
 #include "../../Examples/InterpolatorTrailScene.h"
-
-#include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
-#include "vtkRenderer.h"
-#include "vtkTesting.h"
-
-#include <cstdlib>
-#include <iostream>
+#include "RegressionImage.h"
 
 int TestTransformInterpolatorTrail(int argc, char* argv[])
 {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  if (!lct_regression::DisplayAvailable("TestTransformInterpolatorTrail"))
   {
-    std::cerr << "TestTransformInterpolatorTrail: DISPLAY is not set (run under xvfb-run -a); "
-                 "skipped.\n";
     return VTK_SKIP_RETURN_CODE;
   }
-
   constexpr int size = 600;
   vtkNew<vtkRenderer> renderer;
   if (!InterpolatorTrailScene::Build(renderer, size))
@@ -38,14 +25,5 @@ int TestTransformInterpolatorTrail(int argc, char* argv[])
   renWin->SetMultiSamples(0);
   renWin->SetSize(size, size);
   renWin->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> iren;
-  iren->SetRenderWindow(renWin);
-  renWin->Render();
-
-  int ret = vtkRegressionTestImage(renWin);
-  if (ret == vtkRegressionTester::DO_INTERACTOR)
-  {
-    iren->Start();
-  }
-  return !ret;
+  return lct_regression::CompareWithBaseline(renWin, argc, argv);
 }

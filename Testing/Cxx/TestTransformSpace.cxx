@@ -5,26 +5,14 @@
 // with the Wuson mesh of assimp-testmodels; without it the scene falls back to an arrow and
 // the image test fails).
 #include "../../Examples/TransformSpaceScene.h"
-
-#include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
-#include "vtkRenderer.h"
-#include "vtkTesting.h"
-
-#include <cstdlib>
-#include <iostream>
+#include "RegressionImage.h"
 
 int TestTransformSpace(int argc, char* argv[])
 {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  if (!lct_regression::DisplayAvailable("TestTransformSpace"))
   {
-    std::cerr << "TestTransformSpace: DISPLAY is not set (run under xvfb-run -a); skipped.\n";
     return VTK_SKIP_RETURN_CODE;
   }
-
   vtkNew<vtkRenderer> renderer;
   if (!TransformSpaceScene::Build(renderer))
   {
@@ -34,14 +22,5 @@ int TestTransformSpace(int argc, char* argv[])
   renWin->SetMultiSamples(0);
   renWin->SetSize(400, 400);
   renWin->AddRenderer(renderer);
-  vtkNew<vtkRenderWindowInteractor> iren;
-  iren->SetRenderWindow(renWin);
-  renWin->Render();
-
-  int ret = vtkRegressionTestImage(renWin);
-  if (ret == vtkRegressionTester::DO_INTERACTOR)
-  {
-    iren->Start();
-  }
-  return !ret;
+  return lct_regression::CompareWithBaseline(renWin, argc, argv);
 }
