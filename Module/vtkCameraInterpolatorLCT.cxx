@@ -3,6 +3,7 @@
 #include "lct/CameraKey.h"
 #include "lct/Curves.h"
 #include "lct/KeyLogs.h"
+#include "lct/Keyframes.h"
 
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
@@ -72,8 +73,7 @@ struct Key
 /// focal point that the keys share). Rotations always have logs, so updates cannot fail.
 struct vtkCameraInterpolatorLCT::Internals
 {
-  std::vector<Key> Keys;
-  std::vector<double> Times;
+  lct::Keyframes<Key> Keys;
   lct::KeyLogs Orientations;
   /// Logs of the camera matrices (MatrixLog), built on the first CameraMatrix evaluation after a
   /// change, and why they are missing if they are.
@@ -86,9 +86,9 @@ struct vtkCameraInterpolatorLCT::Internals
     if (!this->CameraMatricesCurrent)
     {
       std::vector<Eigen::Matrix4d> matrices;
-      for (const Key& k : this->Keys)
+      for (size_t i = 0; i < this->Keys.size(); ++i)
       {
-        matrices.push_back(k.CameraMatrix);
+        matrices.push_back(this->Keys[i].CameraMatrix);
       }
       this->CameraMatricesStatus =
         this->CameraMatrices.build(matrices, lct::Parametrisation::MatrixLog, true);
@@ -104,30 +104,20 @@ struct vtkCameraInterpolatorLCT::Internals
     return m;
   }
 
-  void KeysChanged()
-  {
-    this->CameraMatricesCurrent = false;
-    this->Times.resize(this->Keys.size());
-    for (size_t i = 0; i < this->Keys.size(); ++i)
-    {
-      this->Times[i] = this->Keys[i].Time;
-    }
-  }
+  void KeysChanged() { this->CameraMatricesCurrent = false; }
 
   void Add(const Key& key)
   {
-    auto at = std::lower_bound(this->Keys.begin(), this->Keys.end(), key.Time,
-      [](const Key& k, double time) { return k.Time < time; });
-    const int index = static_cast<int>(at - this->Keys.begin());
-    if (at != this->Keys.end() && at->Time == key.Time)
+    const int index = this->Keys.position(key.Time);
+    if (this->Keys.find(key.Time) == index)
     {
       this->Orientations.replace(index, Orientation(key), false);
-      *at = key;
+      this->Keys.replace(index, key);
     }
     else
     {
       this->Orientations.insert(index, Orientation(key), false);
-      this->Keys.insert(at, key);
+      this->Keys.insert(index, key);
     }
     this->KeysChanged();
   }
@@ -135,7 +125,7 @@ struct vtkCameraInterpolatorLCT::Internals
   void Remove(int index)
   {
     this->Orientations.erase(index, false);
-    this->Keys.erase(this->Keys.begin() + index);
+    this->Keys.erase(index);
     this->KeysChanged();
   }
 };
@@ -161,13 +151,13 @@ int vtkCameraInterpolatorLCT::GetNumberOfCameras()
 //------------------------------------------------------------------------------
 double vtkCameraInterpolatorLCT::GetMinimumT()
 {
-  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.front().Time;
+  return this->Internal->Keys.minimumTime();
 }
 
 //------------------------------------------------------------------------------
 double vtkCameraInterpolatorLCT::GetMaximumT()
 {
-  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.back().Time;
+  return this->Internal->Keys.maximumTime();
 }
 
 //------------------------------------------------------------------------------
@@ -204,8 +194,9 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << "; key rejected.");
     return 0;
   }
-  for (const Key& other : this->Internal->Keys)
+  for (size_t i = 0; i < this->Internal->Keys.size(); ++i)
   {
+    const Key& other = this->Internal->Keys[i];
     if (other.Time != t && other.Camera.parallelProjection != key.value.parallelProjection)
     {
       vtkErrorMacro(<< "AddCamera at t = " << t << ": a "
@@ -224,13 +215,12 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
 //------------------------------------------------------------------------------
 void vtkCameraInterpolatorLCT::RemoveCamera(double t)
 {
-  const std::vector<Key>& keys = this->Internal->Keys;
-  const auto at = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
-  if (at == keys.end())
+  const int index = this->Internal->Keys.find(t);
+  if (index < 0)
   {
     return;
   }
-  this->Internal->Remove(static_cast<int>(at - keys.begin()));
+  this->Internal->Remove(index);
   this->Modified();
 }
 
@@ -247,7 +237,7 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
     return 0;
   }
   const lct::CurveWeights w =
-    lct::curveWeights(toScheme(this->InterpolationType), in.Times.data(), n, t);
+    lct::curveWeights(toScheme(this->InterpolationType), in.Keys.times().data(), n, t);
   lct::CameraKey key;
   const lct::Status status = this->ConsistentRotation
     ? in.Orientations.combineAbsolute(w, key.focalFrame)
@@ -267,7 +257,7 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
     focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
   }
   key.focalFrame.topRightCorner<3, 1>() = focalPoint;
-  key.parallelProjection = in.Keys.front().Camera.parallelProjection;
+  key.parallelProjection = in.Keys[0].Camera.parallelProjection;
   lct::CameraParameters result = lct::fromCameraKey(key);
   if (this->Method == METHOD_CAMERA_MATRIX)
   {

@@ -3,6 +3,7 @@
 #include "lct/Affine.h"
 #include "lct/Curves.h"
 #include "lct/KeyLogs.h"
+#include "lct/Keyframes.h"
 #include "lct/Parametrisation.h"
 
 #include "vtkLogTransform.h"
@@ -60,8 +61,7 @@ lct::CurveScheme toScheme(int type)
 /// The keys and the logs derived from them, updated together whenever the keys change.
 struct vtkTransformInterpolatorLCT::Internals
 {
-  std::vector<Key> Keys;
-  std::vector<double> Times;
+  lct::Keyframes<Key> Keys;
   /// Logs of the keys (Linear, Spline, BSpline, Subdivision), updated incrementally.
   lct::KeyLogs KeyLogs;
   /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), built on the first
@@ -85,7 +85,7 @@ struct vtkTransformInterpolatorLCT::Internals
       const int lo = std::max(k - 1, 0);
       const int hi = std::min(k + 1, n - 1);
       return (*this->KeyLogs.relative(hi, k) - *this->KeyLogs.relative(lo, k)) /
-        (this->Times[hi] - this->Times[lo]);
+        (this->Keys.times()[hi] - this->Keys.times()[lo]);
     };
     auto automatic = [&](int k, double signedThird, Eigen::Matrix4d& control) {
       const auto c = lct::exponential(signedThird * tangent(k), p);
@@ -104,7 +104,7 @@ struct vtkTransformInterpolatorLCT::Internals
       {
         if (!key.HasIncoming)
         {
-          const lct::Status status = automatic(k, -(this->Times[k] - this->Times[k - 1]) / 3.0, control);
+          const lct::Status status = automatic(k, -(this->Keys[k].Time - this->Keys[k - 1].Time) / 3.0, control);
           if (status != lct::Status::Ok)
           {
             return status;
@@ -117,7 +117,7 @@ struct vtkTransformInterpolatorLCT::Internals
       {
         if (!key.HasOutgoing)
         {
-          const lct::Status status = automatic(k, (this->Times[k + 1] - this->Times[k]) / 3.0, control);
+          const lct::Status status = automatic(k, (this->Keys[k + 1].Time - this->Keys[k].Time) / 3.0, control);
           if (status != lct::Status::Ok)
           {
             return status;
@@ -143,40 +143,31 @@ struct vtkTransformInterpolatorLCT::Internals
           this->BezierLogs.build(sequence, this->KeyLogs.parametrisation(), false, &failed);
         failed = (failed + 1) / 3;
       }
-      this->BezierFailedTime = this->Times.empty() ? 0.0 : this->Times[std::min<size_t>(failed, this->Times.size() - 1)];
+      this->BezierFailedTime =
+        this->Keys.empty() ? 0.0 : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
       this->BezierCurrent = true;
     }
     return this->BezierLogs;
   }
 
-  void KeysChanged()
-  {
-    this->Times.resize(this->Keys.size());
-    for (size_t i = 0; i < this->Keys.size(); ++i)
-    {
-      this->Times[i] = this->Keys[i].Time;
-    }
-    this->BezierCurrent = false;
-  }
+  void KeysChanged() { this->BezierCurrent = false; }
 
   /// Adds or replaces (same time) a key. On failure nothing changes.
   lct::Status Add(const Key& key)
   {
-    auto at = std::lower_bound(this->Keys.begin(), this->Keys.end(), key.Time,
-      [](const Key& k, double time) { return k.Time < time; });
-    const int index = static_cast<int>(at - this->Keys.begin());
-    const bool replaces = at != this->Keys.end() && at->Time == key.Time;
+    const int index = this->Keys.position(key.Time);
+    const bool replaces = this->Keys.find(key.Time) == index;
     const lct::Status status = replaces ? this->KeyLogs.replace(index, key.Matrix, true)
                                         : this->KeyLogs.insert(index, key.Matrix, true);
     if (status == lct::Status::Ok)
     {
       if (replaces)
       {
-        *at = key;
+        this->Keys.replace(index, key);
       }
       else
       {
-        this->Keys.insert(at, key);
+        this->Keys.insert(index, key);
       }
       this->KeysChanged();
     }
@@ -189,7 +180,7 @@ struct vtkTransformInterpolatorLCT::Internals
     const lct::Status status = this->KeyLogs.erase(index, true);
     if (status == lct::Status::Ok)
     {
-      this->Keys.erase(this->Keys.begin() + index);
+      this->Keys.erase(index);
       this->KeysChanged();
     }
     return status;
@@ -199,15 +190,15 @@ struct vtkTransformInterpolatorLCT::Internals
   lct::Status Rebuild(lct::Parametrisation p, double& failedTime)
   {
     std::vector<Eigen::Matrix4d> matrices;
-    for (const Key& k : this->Keys)
+    for (size_t i = 0; i < this->Keys.size(); ++i)
     {
-      matrices.push_back(k.Matrix);
+      matrices.push_back(this->Keys[i].Matrix);
     }
     int failed = 0;
     const lct::Status status = this->KeyLogs.build(matrices, p, true, &failed);
     if (status != lct::Status::Ok)
     {
-      failedTime = this->Times[failed];
+      failedTime = this->Keys[failed].Time;
       return status;
     }
     this->KeysChanged();
@@ -236,13 +227,13 @@ int vtkTransformInterpolatorLCT::GetNumberOfTransforms()
 //------------------------------------------------------------------------------
 double vtkTransformInterpolatorLCT::GetMinimumT()
 {
-  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.front().Time;
+  return this->Internal->Keys.minimumTime();
 }
 
 //------------------------------------------------------------------------------
 double vtkTransformInterpolatorLCT::GetMaximumT()
 {
-  return this->Internal->Keys.empty() ? 0.0 : this->Internal->Keys.back().Time;
+  return this->Internal->Keys.maximumTime();
 }
 
 //------------------------------------------------------------------------------
@@ -322,13 +313,13 @@ int vtkTransformInterpolatorLCT::AddTransform(double t, vtkProp3D* prop3D)
 int vtkTransformInterpolatorLCT::SetBezierControls(
   double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing)
 {
-  std::vector<Key>& keys = this->Internal->Keys;
-  auto key = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
-  if (key == keys.end())
+  const int index = this->Internal->Keys.find(t);
+  if (index < 0)
   {
     vtkErrorMacro(<< "SetBezierControls: no key at t = " << t << "; unchanged.");
     return 0;
   }
+  Key* key = &this->Internal->Keys[index];
   vtkMatrix4x4* given[2] = { incoming, outgoing };
   for (vtkMatrix4x4* m : given)
   {
@@ -359,15 +350,14 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::RemoveTransform(double t)
 {
-  const std::vector<Key>& keys = this->Internal->Keys;
-  const auto at = std::find_if(keys.begin(), keys.end(), [t](const Key& k) { return k.Time == t; });
-  if (at == keys.end())
+  const int index = this->Internal->Keys.find(t);
+  if (index < 0)
   {
     return;
   }
   // Removing a key cannot create a missing log in Polar; in MatrixLog its two neighbours may
   // have none between them, so check.
-  if (this->Internal->Remove(static_cast<int>(at - keys.begin())) != lct::Status::Ok)
+  if (this->Internal->Remove(index) != lct::Status::Ok)
   {
     vtkErrorMacro(<< "RemoveTransform(" << t << "): the remaining keys have no common "
                   << lct::name(toCore(this->Parametrisation)) << " logarithms; not removed.");
@@ -428,7 +418,7 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << lct::describe(in.BezierStatus) << "); output unchanged.");
     return false;
   }
-  const lct::CurveWeights w = lct::curveWeights(scheme, in.Times.data(), n, t);
+  const lct::CurveWeights w = lct::curveWeights(scheme, in.Keys.times().data(), n, t);
   Eigen::Matrix4d result;
   const lct::Status status =
     this->ConsistentRotation ? logs.combineAbsolute(w, result) : logs.combineRelative(w, result);
