@@ -1,0 +1,136 @@
+"""vtkTransformInterpolatorLCT and vtkCameraInterpolatorLCT from Python, as drop-ins for VTK's
+interpolators: keys reproduced (including shear and the window centre), VTK's semantics (clamping,
+replacement, props as keys), and bad keys reported with an ErrorEvent and a 0 return.
+
+Run by CTest with /usr/bin/python3 and the build tree on PYTHONPATH.
+"""
+import math
+import unittest
+
+from vtklct import vtkCameraInterpolatorLCT, vtkTransformInterpolatorLCT
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkTransformInterpolator
+
+TOL = 1e-12
+
+
+def elements(m):
+    return [m.GetElement(i, j) for i in range(4) for j in range(4)]
+
+
+def sheared_key(k):
+    shear = vtkMatrix4x4()
+    shear.SetElement(0, 1, 0.2 * k)
+    t = vtkTransform()
+    t.PostMultiply()
+    t.Concatenate(shear)
+    t.Scale(1.0 + 0.3 * k, 1.0, 0.8)
+    t.RotateWXYZ(55.0 * k, 0.3, 1.0, 0.2)
+    t.Translate(k, 0.5 * k, 0.0)
+    return t
+
+
+class ErrorCounter:
+    def __init__(self, obj):
+        self.count = 0
+        obj.AddObserver(vtkCommand.ErrorEvent, self)
+
+    def __call__(self, caller, event):
+        self.count += 1
+
+
+class TransformInterpolator(unittest.TestCase):
+    def setUp(self):
+        self.lct = vtkTransformInterpolatorLCT()
+        self.vtk = vtkTransformInterpolator()
+        for k in range(5):
+            self.assertEqual(self.lct.AddTransform(float(k), sheared_key(k)), 1)
+            self.vtk.AddTransform(float(k), sheared_key(k))
+
+    def test_keys_are_reproduced_where_vtk_misses_them(self):
+        worst_vtk = 0.0
+        for kind in ("Linear", "Spline", "Subdivision", "Bezier"):
+            getattr(self.lct, "SetInterpolationTypeTo" + kind)()
+            for k in range(5):
+                out = vtkTransform()
+                self.assertEqual(self.lct.InterpolateTransform(float(k), out), 1)
+                for a, b in zip(elements(out.GetMatrix()), elements(sheared_key(k).GetMatrix())):
+                    self.assertAlmostEqual(a, b, delta=TOL * 10)
+        for k in range(5):
+            out = vtkTransform()
+            self.vtk.InterpolateTransform(float(k), out)
+            worst_vtk = max(worst_vtk, max(abs(a - b) for a, b in zip(
+                elements(out.GetMatrix()), elements(sheared_key(k).GetMatrix()))))
+        self.assertGreater(worst_vtk, 1e-2)
+
+    def test_vtk_semantics(self):
+        out = vtkMatrix4x4()
+        self.assertEqual(self.lct.InterpolateTransform(-3.0, out), 1)  # clamped
+        self.assertAlmostEqual(out.GetElement(0, 3), 0.0, delta=TOL)
+        self.lct.AddTransform(4.0, vtkTransform())  # same time: replaces
+        self.assertEqual(self.lct.GetNumberOfTransforms(), 5)
+        self.lct.InterpolateTransform(9.0, out)
+        self.assertEqual(elements(out), elements(vtkTransform().GetMatrix()))
+        actor = vtkActor()
+        actor.SetPosition(1, 2, 3)
+        self.assertEqual(self.lct.AddTransform(5.0, actor), 1)
+        self.lct.RemoveTransform(5.0)
+        self.assertEqual(self.lct.GetMaximumT(), 4.0)
+
+    def test_bad_keys(self):
+        errors = ErrorCounter(self.lct)
+        for bad in ((0, 1, float("nan")), (2, 2, -1.0), (3, 0, 0.5)):
+            m = vtkMatrix4x4()
+            m.SetElement(*bad)
+            self.assertEqual(self.lct.AddTransform(2.5, m), 0)
+        self.assertEqual(errors.count, 3)
+        self.assertEqual(self.lct.GetNumberOfTransforms(), 5)
+        empty = vtkTransformInterpolatorLCT()
+        empty_errors = ErrorCounter(empty)
+        self.assertEqual(empty.InterpolateTransform(0.0, vtkTransform()), 0)
+        self.assertEqual(empty_errors.count, 1)
+
+
+class CameraInterpolator(unittest.TestCase):
+    def test_window_centre_and_turns(self):
+        path = vtkCameraInterpolatorLCT()
+        keys = []
+        for k, (azimuth, center) in enumerate(((0, (0.0, 0.0)), (100, (0.4, -0.2)),
+                                               (200, (0.1, 0.3)))):
+            c = vtkCamera()
+            a = math.radians(azimuth)
+            c.SetPosition(6 * math.cos(a), 6 * math.sin(a), 1.0)
+            c.SetViewUp(0, 0, 1)
+            c.SetWindowCenter(*center)
+            self.assertEqual(path.AddCamera(float(k), c), 1)
+            keys.append(c)
+        for k, key in enumerate(keys):
+            out = vtkCamera()
+            self.assertEqual(path.InterpolateCamera(float(k), out), 1)
+            for a, b in zip(out.GetPosition(), key.GetPosition()):
+                self.assertAlmostEqual(a, b, delta=1e-9)
+            for a, b in zip(out.GetWindowCenter(), key.GetWindowCenter()):
+                self.assertAlmostEqual(a, b, delta=1e-12)
+        mid = vtkCamera()
+        path.InterpolateCamera(0.5, mid)
+        self.assertAlmostEqual(mid.GetDistance(), math.hypot(6.0, 1.0), delta=1e-9)
+
+    def test_bad_cameras(self):
+        path = vtkCameraInterpolatorLCT()
+        errors = ErrorCounter(path)
+        degenerate = vtkCamera()
+        degenerate.SetPosition(0, 0, 0)
+        degenerate.SetFocalPoint(0, 0, 0)
+        self.assertEqual(path.AddCamera(0.0, degenerate), 0)
+        self.assertEqual(path.AddCamera(0.0, vtkCamera()), 1)
+        parallel = vtkCamera()
+        parallel.ParallelProjectionOn()
+        self.assertEqual(path.AddCamera(1.0, parallel), 0)
+        self.assertEqual(errors.count, 2)
+        self.assertEqual(path.GetNumberOfCameras(), 1)
+
+
+if __name__ == "__main__":
+    unittest.main()
