@@ -5,6 +5,8 @@
 #include "lct/SO3.h"
 #include "lct/Sym3.h"
 
+#include <limits>
+
 namespace lct
 {
 
@@ -21,12 +23,18 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   {
     return R::failure(polar.status);
   }
-  const auto logStretch = logSPD(polar.value.stretch);
+  R out;
+  // A rigid map's stretch is I up to round-off: its log is 0 exactly, so that blends of rigid
+  // maps are exactly rigid and take the rotation-only path of polarExp.
+  Eigen::Matrix3d stretchOffset = polar.value.stretch;
+  stretchOffset.diagonal().array() -= 1.0;
+  const bool rigid = stretchOffset.cwiseAbs().maxCoeff() <= 8.0 * std::numeric_limits<double>::epsilon();
+  const auto logStretch =
+    rigid ? Result<Eigen::Matrix3d>{ Eigen::Matrix3d::Zero(), Status::Ok } : logSPD(polar.value.stretch);
   if (!logStretch)
   {
     return R::failure(logStretch.status);
   }
-  R out;
   translationPart(out.value) = m.topRightCorner<3, 1>();
   rotationPart(out.value) = rotationReference
     ? logSO3Nearest(polar.value.rotation, *rotationReference)

@@ -492,3 +492,21 @@ TEST(MatrixLog, PowerMatchesExpOfScaledLogNearAndFarFromIdentity)
   EXPECT_LT(worst, 1e-13);
   EXPECT_EQ(lct::matrixPower(Eigen::Matrix4d::Identity(), std::nan("")).status, lct::Status::NonFinite);
 }
+
+TEST(Polar, RigidMapsHaveAnExactlyZeroStretch)
+{
+  // So that blends of rigid maps are exactly rigid and take polarExp's rotation-only path.
+  lct_test::RandomTransforms random(1100);
+  int nonzero = 0;
+  for (int i = 0; i < 10000; ++i)
+  {
+    const auto c = lct::polarLog(random.Affine(TransformClass::Rigid));
+    ASSERT_TRUE(c.ok());
+    nonzero += lct::symmetricPart(c.value).isZero(0.0) ? 0 : 1;
+  }
+  EXPECT_EQ(nonzero, 0);
+  // ... while a stretch of 1 + 1e-14 is kept.
+  Eigen::Matrix4d almost = Eigen::Matrix4d::Identity();
+  almost(0, 0) = 1.0 + 1e-13;
+  EXPECT_GT(lct::symmetricPart(lct::polarLog(almost).value).norm(), 0.0);
+}
