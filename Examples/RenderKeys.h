@@ -10,7 +10,10 @@
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
 
 #include <nlohmann/json.hpp>
 
@@ -518,6 +521,89 @@ public:
 private:
   std::string File;
 };
+
+/**
+ * A camera key from a ParaView camera file (.pvcc, written by ParaView's "Save Camera": a
+ * PVCameraConfiguration holding the render view's Camera* properties). Position, focal point and
+ * view up are required; view angle, parallel scale and parallel projection are read when
+ * present. Throws InputError naming the file and the missing or malformed property.
+ */
+inline CameraKey ReadPvcc(const std::string& file, double time)
+{
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(file.c_str());
+  if (!std::ifstream(file).good())
+  {
+    throw InputError(file + ": cannot open camera file: " + std::strerror(errno));
+  }
+  parser->SetIgnoreCharacterData(1);
+  if (!parser->Parse() || !parser->GetRootElement() ||
+    std::string(parser->GetRootElement()->GetName()) != "PVCameraConfiguration")
+  {
+    throw InputError(file + ": not a ParaView camera file (no PVCameraConfiguration element)");
+  }
+  // name -> values of the <Property name=...><Element index=i value=v/></Property> elements.
+  std::map<std::string, std::vector<double>> properties;
+  std::vector<vtkXMLDataElement*> pending{ parser->GetRootElement() };
+  while (!pending.empty())
+  {
+    vtkXMLDataElement* e = pending.back();
+    pending.pop_back();
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+    {
+      pending.push_back(e->GetNestedElement(i));
+    }
+    const char* name = e->GetAttribute("name");
+    if (std::string(e->GetName()) != "Property" || !name)
+    {
+      continue;
+    }
+    std::vector<double>& values = properties[name];
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+    {
+      vtkXMLDataElement* element = e->GetNestedElement(i);
+      int index = -1;
+      double value = 0.0;
+      if (std::string(element->GetName()) == "Element" && element->GetScalarAttribute("index", index) &&
+        element->GetScalarAttribute("value", value) && index >= 0 && index < 16)
+      {
+        values.resize(std::max<size_t>(values.size(), index + 1), 0.0);
+        values[index] = value;
+      }
+    }
+  }
+  auto vector3 = [&](const char* name) {
+    const auto it = properties.find(name);
+    if (it == properties.end() || it->second.size() != 3)
+    {
+      throw InputError(file + ": " + name + " is missing or not 3 numbers");
+    }
+    return it->second;
+  };
+  CameraKey key;
+  key.Time = time;
+  key.Path = "camera (" + file + ")";
+  key.Camera = vtkSmartPointer<vtkCamera>::New();
+  key.Camera->SetPosition(vector3("CameraPosition").data());
+  key.Camera->SetFocalPoint(vector3("CameraFocalPoint").data());
+  key.Camera->SetViewUp(vector3("CameraViewUp").data());
+  const auto angle = properties.find("CameraViewAngle");
+  if (angle != properties.end() && angle->second.size() == 1)
+  {
+    key.Camera->SetViewAngle(angle->second[0]);
+  }
+  const auto scale = properties.find("CameraParallelScale");
+  if (scale != properties.end() && scale->second.size() == 1)
+  {
+    key.Camera->SetParallelScale(scale->second[0]);
+  }
+  const auto parallel = properties.find("CameraParallelProjection");
+  if (parallel != properties.end() && parallel->second.size() == 1)
+  {
+    key.Camera->SetParallelProjection(parallel->second[0] != 0.0);
+  }
+  return key;
+}
 
 /// Reads and validates a keyframe file; throws InputError.
 inline Keys ReadFile(const std::string& file)

@@ -47,7 +47,7 @@ namespace
 namespace fs = std::filesystem;
 
 const char* const Usage =
-  R"(usage: lct-render [options] [keys.json]
+  R"(usage: lct-render [options] [keys.json] [view1.pvcc view2.pvcc ...]
 
 Renders a keyframed camera flight through vtkCameraInterpolatorLCT (props through
 vtkTransformInterpolatorLCT) offscreen to DIR/frame_NNNN.png, DIR/video.ogv (Ogg Theora) and
@@ -84,6 +84,9 @@ keys.json:
   applied about the prop's centre (its bounding-box centre in the scene), in world axes. NAME is
   one of the default scene's model, sphere, cube, cone, floor, pedestal, or a --mesh name.
 
+ParaView camera files (.pvcc, from ParaView's "Save Camera"), given in order, become the camera
+keys at t = 0, 1, 2, ... (replacing the keys file's camera keys).
+
 Run it under `xvfb-run -a` when there is no display.
 exit codes: 0 ok, 1 error (bad input, failed write), 2 usage, 125 no DISPLAY
 )";
@@ -99,6 +102,7 @@ struct Options
   bool Compare = false;
   std::string Out = "out/render";
   std::string KeysFile;
+  std::vector<std::string> CameraFiles; // ParaView .pvcc files, one camera key each
   std::vector<std::pair<std::string, std::string>> Meshes;
 };
 
@@ -199,6 +203,10 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
     else if (!a.empty() && a[0] == '-')
     {
       return "unknown option " + a;
+    }
+    else if (a.size() > 5 && a.compare(a.size() - 5, 5, ".pvcc") == 0)
+    {
+      o.CameraFiles.push_back(a);
     }
     else if (o.KeysFile.empty())
     {
@@ -428,6 +436,25 @@ int main(int argc, char* argv[])
   try
   {
     keys = opt.KeysFile.empty() ? RenderKeys::BuiltIn() : RenderKeys::ReadFile(opt.KeysFile);
+    if (!opt.CameraFiles.empty())
+    {
+      // ParaView camera files, in the order given, are the camera keys at t = 0, 1, 2, ...
+      keys.Camera.clear();
+      for (size_t i = 0; i < opt.CameraFiles.size(); ++i)
+      {
+        keys.Camera.push_back(RenderKeys::ReadPvcc(opt.CameraFiles[i], static_cast<double>(i)));
+      }
+      if (keys.Camera.size() < 2)
+      {
+        throw RenderKeys::InputError(opt.CameraFiles[0] +
+          ": a camera path needs at least 2 keys (give 2 or more .pvcc files)");
+      }
+      if (opt.KeysFile.empty())
+      {
+        keys.Props.clear(); // the built-in prop keys belong to the built-in flight
+        keys.Source = opt.CameraFiles[0];
+      }
+    }
     const std::string& source = keys.Source;
     const std::string cameraScheme = opt.Interpolation.empty() ? keys.Interpolation : opt.Interpolation;
 

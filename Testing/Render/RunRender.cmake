@@ -1,10 +1,12 @@
 # Driver for the Render.* tests of lct-render (cmake -P). Variables:
 #   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error
-#   LCT_OUT     scratch directory        LCT_ARGS  extra arguments (;-list)
+#   LCT_OUT     scratch directory        LCT_ARGS  extra arguments, separated by |
 #   LCT_EXPECT  (error) phrase stderr must contain
 # Rendering modes print "LCT_SKIP" (the test's SKIP_REGULAR_EXPRESSION) when lct-render exits 125
 # (no DISPLAY): cmake -P cannot exit with 125 itself.
 cmake_minimum_required(VERSION 3.22)
+# add_test would split a ;-list into separate arguments of cmake itself.
+string(REPLACE "|" ";" LCT_ARGS "${LCT_ARGS}")
 
 function(lct_run out_dir)
   execute_process(
