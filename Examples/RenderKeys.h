@@ -77,8 +77,8 @@ inline bool IsInterpolationName(const std::string& name)
 /// Row-major matrix of translate * rotate * shear * scale (a point is scaled, sheared, rotated,
 /// then translated). rotate = {angle in degrees, axis}; shear = {xy, xz, yz}: x += xy y + xz z,
 /// y += yz z.
-inline std::array<double, 16> ComposeTRS(const double translate[3], const double rotate[4],
-  const double scale[3], const double shear[3])
+inline std::array<double, 16> ComposeTRS(
+  const double translate[3], const double rotate[4], const double scale[3], const double shear[3])
 {
   double axis[3] = { rotate[1], rotate[2], rotate[3] };
   double r[3][3];
@@ -171,8 +171,8 @@ public:
     std::cerr << this->File << ": warning: " << what << "\n";
   }
 
-  void CheckKeys(const nlohmann::json& object, const std::string& path,
-    const std::set<std::string>& known) const
+  void CheckKeys(
+    const nlohmann::json& object, const std::string& path, const std::set<std::string>& known) const
   {
     for (auto it = object.begin(); it != object.end(); ++it)
     {
@@ -378,8 +378,7 @@ public:
       double t[3] = { 0.0, 0.0, 0.0 }, r[4] = { 0.0, 0.0, 0.0, 1.0 }, s[3] = { 1.0, 1.0, 1.0 },
              h[3] = { 0.0, 0.0, 0.0 };
       this->Vector(key, "translate", path, 3, t);
-      if (this->Vector(key, "rotate", path, 4, r) && r[0] != 0.0 &&
-        vtkMath::Norm(r + 1) == 0.0)
+      if (this->Vector(key, "rotate", path, 4, r) && r[0] != 0.0 && vtkMath::Norm(r + 1) == 0.0)
       {
         this->Fail(path + ".rotate: the axis [ax, ay, az] must not be zero");
       }
@@ -453,26 +452,25 @@ public:
     std::map<double, std::string> times;
     for (size_t i = 0; i < cameraKeys.size(); ++i)
     {
-      CameraKey key =
-        this->ReadCameraKey(cameraKeys[i], "camera.keys[" + std::to_string(i) + "]");
+      CameraKey key = this->ReadCameraKey(cameraKeys[i], "camera.keys[" + std::to_string(i) + "]");
       if (times.count(key.Time))
       {
-        this->Fail(key.Path + ".time " + std::to_string(key.Time) + " repeats " +
-          times[key.Time] + ".time");
+        this->Fail(
+          key.Path + ".time " + std::to_string(key.Time) + " repeats " + times[key.Time] + ".time");
       }
       times[key.Time] = key.Path;
-      if (!keys.Camera.empty() && keys.Camera.front().Camera->GetParallelProjection() !=
-          key.Camera->GetParallelProjection())
+      if (!keys.Camera.empty() &&
+        keys.Camera.front().Camera->GetParallelProjection() != key.Camera->GetParallelProjection())
       {
-        this->Fail(key.Path + ".parallel differs from camera.keys[0].parallel (all keys must "
-                              "use the same projection)");
+        this->Fail(key.Path +
+          ".parallel differs from camera.keys[0].parallel (all keys must "
+          "use the same projection)");
       }
       keys.Camera.push_back(key);
     }
     if (keys.Camera.size() < 2)
     {
-      this->Fail("camera.keys: needs at least 2 keys, found " +
-        std::to_string(keys.Camera.size()));
+      this->Fail("camera.keys: needs at least 2 keys, found " + std::to_string(keys.Camera.size()));
     }
     if (doc.contains("props"))
     {
@@ -564,7 +562,8 @@ inline CameraKey ReadPvcc(const std::string& file, double time)
       vtkXMLDataElement* element = e->GetNestedElement(i);
       int index = -1;
       double value = 0.0;
-      if (std::string(element->GetName()) == "Element" && element->GetScalarAttribute("index", index) &&
+      if (std::string(element->GetName()) == "Element" &&
+        element->GetScalarAttribute("index", index) &&
         element->GetScalarAttribute("value", value) && index >= 0 && index < 16)
       {
         values.resize(std::max<size_t>(values.size(), index + 1), 0.0);

@@ -75,8 +75,8 @@ inline vtkSmartPointer<vtkPolyData> LoadModel(std::string* source = nullptr)
       return mesh;
     }
   }
-  std::cerr << "SceneModel: no model file found (install assimp-testmodels for "
-            << ModelFiles()[0] << "); using an arrow instead.\n";
+  std::cerr << "SceneModel: no model file found (install assimp-testmodels for " << ModelFiles()[0]
+            << "); using an arrow instead.\n";
   vtkNew<vtkArrowSource> arrow;
   arrow->SetTipResolution(24);
   arrow->SetShaftResolution(24);

@@ -7,10 +7,10 @@
 #include "CameraFlightScene.h"
 #include "RenderKeys.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCameraInterpolator.h"
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkCameraPathMetric.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCollection.h"
 #include "vtkCommand.h"
 #include "vtkImageData.h"
@@ -157,8 +157,8 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
       const size_t slash = v.find('/');
       std::string total = slash == std::string::npos ? "48" : v.substr(slash + 1);
       if (!ParseInt(v.substr(0, colon), o.First) ||
-        !ParseInt(v.substr(colon + 1, slash == std::string::npos ? std::string::npos
-                                                                 : slash - colon - 1),
+        !ParseInt(
+          v.substr(colon + 1, slash == std::string::npos ? std::string::npos : slash - colon - 1),
           o.Last) ||
         !ParseInt(total, o.Frames) || o.Frames < 1 || o.First >= o.Last || o.Last > o.Frames)
       {
@@ -169,8 +169,8 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
     {
       const size_t x = value(v) ? v.find('x') : std::string::npos;
       if (x == std::string::npos || !ParseInt(v.substr(0, x), o.Width) ||
-        !ParseInt(v.substr(x + 1), o.Height) || o.Width < 16 || o.Height < 16 ||
-        o.Width > 8192 || o.Height > 8192)
+        !ParseInt(v.substr(x + 1), o.Height) || o.Width < 16 || o.Height < 16 || o.Width > 8192 ||
+        o.Height > 8192)
       {
         return "--size expects WxH (16..8192 each), e.g. 640x360";
       }
@@ -283,7 +283,8 @@ struct Prop
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
 {
   std::string ext = fs::path(file).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (!std::ifstream(file, std::ios::binary).good())
   {
     throw RenderKeys::InputError(file + ": cannot open mesh file: " + std::strerror(errno));
@@ -456,7 +457,8 @@ int main(int argc, char* argv[])
       }
     }
     const std::string& source = keys.Source;
-    const std::string cameraScheme = opt.Interpolation.empty() ? keys.Interpolation : opt.Interpolation;
+    const std::string cameraScheme =
+      opt.Interpolation.empty() ? keys.Interpolation : opt.Interpolation;
 
     cameraPath->SetInterpolationType(CameraType(cameraScheme));
     cameraPath->SetConsistentRotation(keys.ConsistentRotation);
@@ -495,8 +497,8 @@ int main(int argc, char* argv[])
       {
         if (p.Name == name)
         {
-          throw RenderKeys::InputError("--mesh " + name + "=" + file + ": the name " + name +
-            " is already used by the scene");
+          throw RenderKeys::InputError(
+            "--mesh " + name + "=" + file + ": the name " + name + " is already used by the scene");
         }
       }
       vtkNew<vtkPolyDataMapper> mapper;
@@ -534,8 +536,8 @@ int main(int argc, char* argv[])
     }
     for (const auto& [name, track] : keys.Props)
     {
-      auto it = std::find_if(
-        props.begin(), props.end(), [&](const Prop& p) { return p.Name == name; });
+      auto it =
+        std::find_if(props.begin(), props.end(), [&](const Prop& p) { return p.Name == name; });
       if (it == props.end())
       {
         std::string known;
@@ -548,8 +550,8 @@ int main(int argc, char* argv[])
       }
       it->Path = vtkSmartPointer<vtkTransformInterpolatorLCT>::New();
       const std::string scheme = !opt.Interpolation.empty() ? opt.Interpolation
-        : !track.Interpolation.empty()                     ? track.Interpolation
-                                                           : keys.Interpolation;
+        : !track.Interpolation.empty()                      ? track.Interpolation
+                                                            : keys.Interpolation;
       it->Path->SetInterpolationType(CameraType(scheme)); // same enum values 0..3
       it->Path->SetConsistentRotation(track.ConsistentRotation);
       ErrorCatcher errors(it->Path);
@@ -645,7 +647,8 @@ int main(int argc, char* argv[])
   for (int side = 0; side < (opt.Compare ? 2 : 1); ++side)
   {
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
-    renderer->SetViewport(opt.Compare ? 0.5 * side : 0.0, 0.0, opt.Compare ? 0.5 * (side + 1) : 1.0, 1.0);
+    renderer->SetViewport(
+      opt.Compare ? 0.5 * side : 0.0, 0.0, opt.Compare ? 0.5 * (side + 1) : 1.0, 1.0);
     renderer->SetBackground(0.96, 0.95, 0.92);
     for (const auto& p : props)
     {
@@ -790,7 +793,8 @@ int main(int argc, char* argv[])
   const double elapsed =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::printf("lct-render: %d frames (%d..%d of %d) at %dx%d in %.2f s (%.1f fps) -> %s/frame_NNNN.png\n",
+  std::printf(
+    "lct-render: %d frames (%d..%d of %d) at %dx%d in %.2f s (%.1f fps) -> %s/frame_NNNN.png\n",
     count, opt.First, opt.Last - 1, N, opt.Width, opt.Height, elapsed,
     elapsed > 0 ? count / elapsed : 0.0, outDir.string().c_str());
   if (full)

@@ -232,7 +232,9 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
   if (!camera || n == 0 || std::isnan(t))
   {
     vtkErrorMacro(<< "InterpolateCamera: "
-                  << (!camera ? "null camera" : n == 0 ? "no keys" : "t is NaN")
+                  << (!camera     ? "null camera"
+                         : n == 0 ? "no keys"
+                                  : "t is NaN")
                   << "; camera unchanged.");
     return 0;
   }
@@ -295,7 +297,6 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCameras: " << this->GetNumberOfCameras() << "\n";
   if (!this->Internal->Keys.empty())
   {
-    os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT()
-       << "]\n";
+    os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT() << "]\n";
   }
 }

@@ -147,8 +147,7 @@ void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, d
     }
     else
     {
-      vtkErrorMacro(<< "TickInternal: a prop path failed at key time " << t
-                    << "; prop unchanged.");
+      vtkErrorMacro(<< "TickInternal: a prop path failed at key time " << t << "; prop unchanged.");
     }
   }
   this->Superclass::TickInternal(currenttime, deltatime, clocktime);
@@ -162,6 +161,7 @@ void vtkInterpolatorCueLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CameraInterpolator: " << this->Internal->CameraPath.Get() << "\n";
   os << indent << "Renderer: " << this->Internal->Renderer.Get() << "\n";
   os << indent << "NumberOfProps: " << this->Internal->Props.size() << "\n";
-  os << indent << "KeyTimeMapping: "
-     << (this->KeyTimeMapping == KEY_TIME_MAPPING_RANGE ? "Range" : "CueTime") << "\n";
+  os << indent
+     << "KeyTimeMapping: " << (this->KeyTimeMapping == KEY_TIME_MAPPING_RANGE ? "Range" : "CueTime")
+     << "\n";
 }

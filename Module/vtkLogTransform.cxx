@@ -254,10 +254,9 @@ int vtkLogTransform::LinearCombination(
     const auto c = lct::logarithm(t->Internal->Matrix, toCore(parametrisation));
     if (!c)
     {
-      vtkErrorWithObjectMacro(result, << "LinearCombination: transform " << i << " has no "
-                                      << lct::name(toCore(parametrisation))
-                                      << " coordinates: " << lct::describe(c.status)
-                                      << "; result unchanged.");
+      vtkErrorWithObjectMacro(result,
+        << "LinearCombination: transform " << i << " has no " << lct::name(toCore(parametrisation))
+        << " coordinates: " << lct::describe(c.status) << "; result unchanged.");
       return 0;
     }
     sum += weights[i] * c.value;
@@ -293,8 +292,8 @@ int vtkLogTransform::LinearCombination(
     items[i] = vtkLogTransform::SafeDownCast(transforms->GetItemAsObject(i));
     if (!items[i])
     {
-      vtkErrorWithObjectMacro(result, << "LinearCombination: item " << i
-                                      << " is not a vtkLogTransform; result unchanged.");
+      vtkErrorWithObjectMacro(result,
+        << "LinearCombination: item " << i << " is not a vtkLogTransform; result unchanged.");
       return 0;
     }
     w[i] = weights->GetValue(i);

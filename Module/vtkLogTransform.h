@@ -122,8 +122,8 @@ public:
    * on a null or unconvertible input, a weight count mismatch, or overflow.
    * The collection form is the one available from Python.
    */
-  static int LinearCombination(vtkCollection* transforms, vtkDoubleArray* weights,
-    vtkLogTransform* result);
+  static int LinearCombination(
+    vtkCollection* transforms, vtkDoubleArray* weights, vtkLogTransform* result);
 #ifndef __VTK_WRAP__
   static int LinearCombination(
     int count, const double* weights, vtkLogTransform* const* transforms, vtkLogTransform* result);

@@ -104,7 +104,8 @@ struct vtkTransformInterpolatorLCT::Internals
       {
         if (!key.HasIncoming)
         {
-          const lct::Status status = automatic(k, -(this->Keys[k].Time - this->Keys[k - 1].Time) / 3.0, control);
+          const lct::Status status =
+            automatic(k, -(this->Keys[k].Time - this->Keys[k - 1].Time) / 3.0, control);
           if (status != lct::Status::Ok)
           {
             return status;
@@ -117,7 +118,8 @@ struct vtkTransformInterpolatorLCT::Internals
       {
         if (!key.HasOutgoing)
         {
-          const lct::Status status = automatic(k, (this->Keys[k + 1].Time - this->Keys[k].Time) / 3.0, control);
+          const lct::Status status =
+            automatic(k, (this->Keys[k + 1].Time - this->Keys[k].Time) / 3.0, control);
           if (status != lct::Status::Ok)
           {
             return status;
@@ -323,8 +325,9 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
   vtkMatrix4x4* given[2] = { incoming, outgoing };
   for (vtkMatrix4x4* m : given)
   {
-    const lct::Status valid = m ? lct::validateAffine(RowMajor4(Eigen::Map<const RowMajor4>(m->GetData())))
-                                : lct::Status::Ok;
+    const lct::Status valid = m
+      ? lct::validateAffine(RowMajor4(Eigen::Map<const RowMajor4>(m->GetData())))
+      : lct::Status::Ok;
     if (valid != lct::Status::Ok)
     {
       vtkErrorMacro(<< "SetBezierControls(t = " << t << "): " << lct::describe(valid)
@@ -384,8 +387,8 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
   if (built != lct::Status::Ok)
   {
     vtkErrorMacro(<< "SetParametrisation: the key at t = " << failedTime << " has no "
-                  << lct::name(toCore(parametrisation)) << " logarithm ("
-                  << lct::describe(built) << "); unchanged.");
+                  << lct::name(toCore(parametrisation)) << " logarithm (" << lct::describe(built)
+                  << "); unchanged.");
     return 0;
   }
   this->Parametrisation = parametrisation;
@@ -483,7 +486,6 @@ void vtkTransformInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTransforms: " << this->GetNumberOfTransforms() << "\n";
   if (!this->Internal->Keys.empty())
   {
-    os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT()
-       << "]\n";
+    os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT() << "]\n";
   }
 }

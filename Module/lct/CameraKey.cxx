@@ -81,8 +81,8 @@ CameraParameters fromCameraKey(const CameraKey& key)
   c.windowCenter = Eigen::Vector2d(ch[CameraKey::WindowCenterX], ch[CameraKey::WindowCenterY]);
   c.viewShear =
     Eigen::Vector3d(ch[CameraKey::ShearX], ch[CameraKey::ShearY], ch[CameraKey::ShearCenter]);
-  c.clippingRange = distance *
-    Eigen::Vector2d(std::exp(ch[CameraKey::LogNear]), std::exp(ch[CameraKey::LogFar]));
+  c.clippingRange =
+    distance * Eigen::Vector2d(std::exp(ch[CameraKey::LogNear]), std::exp(ch[CameraKey::LogFar]));
   return c;
 }
 
@@ -136,8 +136,7 @@ Result<CameraParameters> fromCameraMatrix(const Eigen::Matrix4d& m, const Camera
   }
   k /= k(2, 2);
   CameraParameters c = rest;
-  const Eigen::Vector3d position =
-    -(rotation.transpose() * k.inverse() * m.topRightCorner<3, 1>());
+  const Eigen::Vector3d position = -(rotation.transpose() * k.inverse() * m.topRightCorner<3, 1>());
   const double distance = (rest.position - rest.focalPoint).norm();
   c.position = position;
   c.focalPoint = position - distance * rotation.row(2).transpose();

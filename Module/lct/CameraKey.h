@@ -84,11 +84,11 @@ VTKLCT_EXPORT CameraParameters fromCameraKey(const CameraKey& key);
 
 /**
  * Hawkins & Grimm's literal formulation (eq. 5, 7), offered for comparison: the camera matrix
- * C = P_b S V with V = [R | -R c] the view transform, S = diag(f, f, 1, 1), f = cot(view angle / 2),
- * and P_b = [[1, 0, u0, 0], [0, 1, v0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] holding the window centre
- * (u0, v0) (the paper's aspect and skew are 1 and 0 for a vtkCamera). The whole matrix is then
- * interpolated by its log relative to a key; in between it generally acquires skew and anisotropy,
- * which `fromCameraMatrix` drops (it keeps f_y) because a vtkCamera cannot show them.
+ * C = P_b S V with V = [R | -R c] the view transform, S = diag(f, f, 1, 1), f = cot(view angle /
+ * 2), and P_b = [[1, 0, u0, 0], [0, 1, v0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] holding the window
+ * centre (u0, v0) (the paper's aspect and skew are 1 and 0 for a vtkCamera). The whole matrix is
+ * then interpolated by its log relative to a key; in between it generally acquires skew and
+ * anisotropy, which `fromCameraMatrix` drops (it keeps f_y) because a vtkCamera cannot show them.
  */
 VTKLCT_EXPORT Eigen::Matrix4d cameraMatrix(const CameraParameters& camera);
 

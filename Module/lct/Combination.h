@@ -39,8 +39,8 @@ inline LogCoords lerp(const LogCoords& a, const LogCoords& b, double t)
 }
 
 /// exp(sum_i w_i log T_i). Fails when a key has no log or the result is not finite.
-VTKLCT_EXPORT Result<Eigen::Matrix4d> combine(const double* weights, const Eigen::Matrix4d* keys,
-  std::size_t count, Parametrisation p);
+VTKLCT_EXPORT Result<Eigen::Matrix4d> combine(
+  const double* weights, const Eigen::Matrix4d* keys, std::size_t count, Parametrisation p);
 
 /// exp(sum_i w_i log(T_i R^-1)) R with R = keys[reference] (Hawkins & Grimm eq. 7).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> combineRelative(const double* weights,

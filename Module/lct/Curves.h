@@ -14,8 +14,9 @@
  *   p[-1] = 2 p[0] - p[1] so that the curve starts and ends on the end keys.
  * - Subdivision: the limit of the 4-point scheme (-1/16, 9/16, 9/16, -1/16), i.e. the
  *   Deslauriers-Dubuc fundamental function (support [-3, 3]) over the key index, sampled once
- *   at 2^-10 and interpolated by C1 cubic Hermite pieces; interpolating and C1. Boundary keys by the corrected
- *   reflection log M[-1] = 2 log M[0] - log M[1] (SEEDS.md erratum to Hawkins & Grimm eq. 11).
+ *   at 2^-10 and interpolated by C1 cubic Hermite pieces; interpolating and C1. Boundary keys by
+ * the corrected reflection log M[-1] = 2 log M[0] - log M[1] (SEEDS.md erratum to Hawkins & Grimm
+ * eq. 11).
  * - Bezier: Alexa §6.1, cubic Bezier segments whose tangents are given by control transforms.
  *   Its weights refer to the sequence of 3 (n - 1) + 1 points K0, C0+, C1-, K1, C1+, C2-, K2, ...
  *   (key i is point 3 i; C_i+ and C_(i+1)- are the control points of segment i), with the

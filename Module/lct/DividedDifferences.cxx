@@ -68,7 +68,8 @@ inline double multiply(double a, double b)
 }
 inline Complex multiply(const Complex& a, const Complex& b)
 {
-  return Complex(a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real());
+  return Complex(
+    a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real());
 }
 
 /// f[nodes in mask] from the Taylor series of f about the centroid c of those nodes:
@@ -276,9 +277,8 @@ NewtonCoefficients3 newtonCoefficients(ScalarFunction f, double x0, double x1, d
       {
         const double e1 = e0 + e0 * m1;
         const double e2 = e0 + e0 * m2;
-        out.c2 = std::abs(d1) >= std::abs(d2)
-          ? (pairDifference(f, x1, e1, x2, e2) - c02) / d1
-          : (pairDifference(f, x1, e1, x2, e2) - out.c1) / d2;
+        out.c2 = std::abs(d1) >= std::abs(d2) ? (pairDifference(f, x1, e1, x2, e2) - c02) / d1
+                                              : (pairDifference(f, x1, e1, x2, e2) - out.c1) / d2;
       }
     }
     return out;

@@ -31,8 +31,8 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
   }
   const double p = std::sqrt(p2);
   // det(B / p) / 2 lies in [-1, 1]; clamp against round-off.
-  const double detB = b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) +
-    b02 * (b01 * b12 - b11 * b02);
+  const double detB =
+    b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
   const double r = std::clamp(detB / (2.0 * p2 * p), -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
   // cos(phi -+ 2 pi/3) = -cos(phi)/2 +- sqrt(3)/2 sin(phi): one cos and one sin for all three.

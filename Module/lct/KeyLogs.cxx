@@ -23,7 +23,8 @@ void KeyLogs::updateAbsoluteFrom(int index)
   const int n = static_cast<int>(this->Matrices.size());
   for (int i = std::max(index, 0); i < n; ++i)
   {
-    const LogCoords* previous = (i > 0 && this->AbsoluteValid[i - 1]) ? &this->Absolute[i - 1] : nullptr;
+    const LogCoords* previous =
+      (i > 0 && this->AbsoluteValid[i - 1]) ? &this->Absolute[i - 1] : nullptr;
     const auto a = logarithm(this->Matrices[i], this->P, previous);
     const bool unchanged = i > index && this->AbsoluteValid[i] == static_cast<char>(a.ok()) &&
       (!a.ok() || a.value == this->Absolute[i]);

@@ -39,8 +39,8 @@ public:
   /// The index at which a key at time t belongs (that of the key it replaces, if any).
   int position(double t) const
   {
-    return static_cast<int>(std::lower_bound(this->Times.begin(), this->Times.end(), t) -
-      this->Times.begin());
+    return static_cast<int>(
+      std::lower_bound(this->Times.begin(), this->Times.end(), t) - this->Times.begin());
   }
 
   void insert(int index, const Key& key)

@@ -28,9 +28,10 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   // maps are exactly rigid and take the rotation-only path of polarExp.
   Eigen::Matrix3d stretchOffset = polar.value.stretch;
   stretchOffset.diagonal().array() -= 1.0;
-  const bool rigid = stretchOffset.cwiseAbs().maxCoeff() <= 8.0 * std::numeric_limits<double>::epsilon();
-  const auto logStretch =
-    rigid ? Result<Eigen::Matrix3d>{ Eigen::Matrix3d::Zero(), Status::Ok } : logSPD(polar.value.stretch);
+  const bool rigid =
+    stretchOffset.cwiseAbs().maxCoeff() <= 8.0 * std::numeric_limits<double>::epsilon();
+  const auto logStretch = rigid ? Result<Eigen::Matrix3d>{ Eigen::Matrix3d::Zero(), Status::Ok }
+                                : logSPD(polar.value.stretch);
   if (!logStretch)
   {
     return R::failure(logStretch.status);

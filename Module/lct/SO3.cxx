@@ -14,8 +14,8 @@ constexpr double kTwoPi = 2.0 * kPi;
 Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
 {
   const double theta2 = w.squaredNorm();
-  double sinc;         // sin(t) / t
-  double halfSincSq2;  // (1 - cos t) / t^2 = (sin(t/2) / (t/2))^2 / 2
+  double sinc;        // sin(t) / t
+  double halfSincSq2; // (1 - cos t) / t^2 = (sin(t/2) / (t/2))^2 / 2
   double cosTheta;
   if (theta2 < 1e-8)
   {
@@ -76,7 +76,8 @@ Eigen::Vector3d logSO3(const Eigen::Matrix3d& r)
   return std::atan2(sinTheta, cosTheta) * n;
 }
 
-Eigen::Vector3d nearestEquivalentRotation(const Eigen::Vector3d& w, const Eigen::Vector3d& reference)
+Eigen::Vector3d nearestEquivalentRotation(
+  const Eigen::Vector3d& w, const Eigen::Vector3d& reference)
 {
   const double theta = w.norm();
   Eigen::Vector3d axis;

@@ -6,11 +6,9 @@
  * Format read:
  *
  *     HIERARCHY
- *     ROOT name { OFFSET x y z  CHANNELS n c1 .. cn  (JOINT name { ... } | End Site { OFFSET x y z })* }
- *     MOTION
- *     Frames: F
- *     Frame Time: dt
- *     F lines of channel values, in the depth-first order of the joints' CHANNELS
+ *     ROOT name { OFFSET x y z  CHANNELS n c1 .. cn  (JOINT name { ... } | End Site { OFFSET x y z
+ * })* } MOTION Frames: F Frame Time: dt F lines of channel values, in the depth-first order of the
+ * joints' CHANNELS
  *
  * Channels are Xposition Yposition Zposition Xrotation Yrotation Zrotation, in any order per
  * joint. Several ROOTs are accepted. Data lines beyond the F announced are ignored (some
@@ -57,11 +55,11 @@ enum class BVHChannel
 /// One node of the hierarchy: a ROOT, a JOINT or an End Site.
 struct BVHJoint
 {
-  std::string name;                ///< End Sites are named "<parent> End Site"
-  int parent = -1;                 ///< index in BVHMotion::joints, -1 for a ROOT
-  std::array<double, 3> offset{};  ///< OFFSET, in the parent's frame
-  std::vector<BVHChannel> channels;///< in file order (empty for an End Site)
-  int firstChannel = 0;            ///< index of channels[0] within a frame's values
+  std::string name;                 ///< End Sites are named "<parent> End Site"
+  int parent = -1;                  ///< index in BVHMotion::joints, -1 for a ROOT
+  std::array<double, 3> offset{};   ///< OFFSET, in the parent's frame
+  std::vector<BVHChannel> channels; ///< in file order (empty for an End Site)
+  int firstChannel = 0;             ///< index of channels[0] within a frame's values
   bool endSite = false;
 };
 
@@ -69,7 +67,7 @@ struct BVHJoint
 struct BVHMotion
 {
   std::vector<BVHJoint> joints;
-  int channelCount = 0;  ///< values per frame
+  int channelCount = 0; ///< values per frame
   int frameCount = 0;
   double frameTime = 0.0;
   std::vector<double> values; ///< frameCount x channelCount, row per frame
@@ -141,12 +139,24 @@ inline Matrix4 LocalTransform(const BVHMotion& motion, int j, const double* fram
     const double v = frame[joint.firstChannel + c];
     switch (joint.channels[c])
     {
-      case BVHChannel::Xposition: t[0] += v; break;
-      case BVHChannel::Yposition: t[1] += v; break;
-      case BVHChannel::Zposition: t[2] += v; break;
-      case BVHChannel::Xrotation: r = MultiplyAffine(r, AxisRotation(0, v)); break;
-      case BVHChannel::Yrotation: r = MultiplyAffine(r, AxisRotation(1, v)); break;
-      case BVHChannel::Zrotation: r = MultiplyAffine(r, AxisRotation(2, v)); break;
+      case BVHChannel::Xposition:
+        t[0] += v;
+        break;
+      case BVHChannel::Yposition:
+        t[1] += v;
+        break;
+      case BVHChannel::Zposition:
+        t[2] += v;
+        break;
+      case BVHChannel::Xrotation:
+        r = MultiplyAffine(r, AxisRotation(0, v));
+        break;
+      case BVHChannel::Yrotation:
+        r = MultiplyAffine(r, AxisRotation(1, v));
+        break;
+      case BVHChannel::Zrotation:
+        r = MultiplyAffine(r, AxisRotation(2, v));
+        break;
     }
   }
   r[3] = t[0];
@@ -337,7 +347,8 @@ public:
     }
     if (token != "MOTION")
     {
-      return this->Fail(result, "expected MOTION or ROOT after the hierarchy, found '" + token + "'");
+      return this->Fail(
+        result, "expected MOTION or ROOT after the hierarchy, found '" + token + "'");
     }
     std::string a, b;
     double frames = 0.0;
@@ -361,8 +372,9 @@ public:
     {
       if (!this->Lex.NextLine(line))
       {
-        return this->Fail(result, "the file ends after " + std::to_string(f) + " of the " +
-            std::to_string(m.frameCount) + " frames announced");
+        return this->Fail(result,
+          "the file ends after " + std::to_string(f) + " of the " + std::to_string(m.frameCount) +
+            " frames announced");
       }
       std::istringstream in(line);
       int n = 0;
@@ -372,7 +384,8 @@ public:
         double v = 0.0;
         if (!ParseNumber(value, v))
         {
-          return this->Fail(result, "frame " + std::to_string(f) + ": '" + value + "' is not a finite number");
+          return this->Fail(
+            result, "frame " + std::to_string(f) + ": '" + value + "' is not a finite number");
         }
         if (n < m.channelCount)
         {
@@ -382,7 +395,8 @@ public:
       }
       if (n != m.channelCount)
       {
-        return this->Fail(result, "frame " + std::to_string(f) + " has " + std::to_string(n) +
+        return this->Fail(result,
+          "frame " + std::to_string(f) + " has " + std::to_string(n) +
             " values, the hierarchy declares " + std::to_string(m.channelCount) + " channels");
       }
     }
@@ -509,8 +523,8 @@ private:
         }
         continue;
       }
-      return this->SetError("joint '" + joint.name + "': expected JOINT, End Site or '}', found '" +
-        token + "'");
+      return this->SetError(
+        "joint '" + joint.name + "': expected JOINT, End Site or '}', found '" + token + "'");
     }
   }
 

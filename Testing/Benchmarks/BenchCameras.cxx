@@ -31,7 +31,8 @@ void randomCamera(lct_test::RandomTransforms& random, const Eigen::Vector3d& dir
   vtkCamera* camera)
 {
   const Eigen::Vector3d axis = direction.unitOrthogonal();
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(turn, (axis + 0.3 * random.UnitVector()).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r =
+    Eigen::AngleAxisd(turn, (axis + 0.3 * random.UnitVector()).normalized()).toRotationMatrix();
   const Eigen::Vector3d dir = r * direction;
   const Eigen::Vector3d focal = 0.3 * random.Uniform(0.0, 1.0) * random.UnitVector();
   const Eigen::Vector3d position = focal + random.LogUniform(4.0, 8.0) * dir;
@@ -109,10 +110,22 @@ void Vtk(benchmark::State& state, int type)
   }
 }
 
-void Ours_Linear(benchmark::State& s) { Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR); }
-void Ours_Spline(benchmark::State& s) { Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
-void Vtk_Linear(benchmark::State& s) { Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_LINEAR); }
-void Vtk_Spline(benchmark::State& s) { Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_SPLINE); }
+void Ours_Linear(benchmark::State& s)
+{
+  Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR);
+}
+void Ours_Spline(benchmark::State& s)
+{
+  Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
+}
+void Vtk_Linear(benchmark::State& s)
+{
+  Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_LINEAR);
+}
+void Vtk_Spline(benchmark::State& s)
+{
+  Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_SPLINE);
+}
 BENCHMARK(Ours_Linear)->Arg(2)->Arg(10);
 BENCHMARK(Ours_Spline)->Arg(2)->Arg(10);
 BENCHMARK(Vtk_Linear)->Arg(2)->Arg(10);
@@ -195,8 +208,9 @@ int main(int argc, char** argv)
   benchmark::Initialize(&argc, argv);
   lct_bench::RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  std::printf("\nInterpolateCamera, ns per call (targets: <= 1.0x VTK spline, <= 3x VTK linear; VTK "
-              "9.1's linear type returns garbage, timed anyway):\n");
+  std::printf(
+    "\nInterpolateCamera, ns per call (targets: <= 1.0x VTK spline, <= 3x VTK linear; VTK "
+    "9.1's linear type returns garbage, timed anyway):\n");
   std::printf("  %-5s %-8s %9s %12s %12s %10s %10s\n", "keys", "ours", "ours ns", "VTK lin ns",
     "VTK spl ns", "/VTK lin", "/VTK spl");
   for (int n : { 2, 10 })
@@ -235,8 +249,8 @@ int main(int argc, char** argv)
       "vtkCameraInterpolatorLCT", ours.camera, ours.screen, ours.leaving, ours.failures);
     std::printf("  %-12s %-28s %10.1f %10.1f %12.2f %9d\n", label.c_str(),
       "LCT CameraMatrix (paper eq.7)", paper.camera, paper.screen, paper.leaving, paper.failures);
-    std::printf("  %-12s %-28s %10.1f %10.1f %12.2f %9d\n", label.c_str(),
-      "vtkCameraInterpolator", vtk.camera, vtk.screen, vtk.leaving, vtk.failures);
+    std::printf("  %-12s %-28s %10.1f %10.1f %12.2f %9d\n", label.c_str(), "vtkCameraInterpolator",
+      vtk.camera, vtk.screen, vtk.leaving, vtk.failures);
   }
   benchmark::Shutdown();
   return 0;

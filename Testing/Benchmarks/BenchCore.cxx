@@ -42,10 +42,12 @@ struct Inputs
     lct_test::RandomTransforms random(2024);
     while (static_cast<int>(affine.size()) < kInputs)
     {
-      const Eigen::Vector3d s(random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0));
+      const Eigen::Vector3d s(
+        random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0));
       Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-      m.topLeftCorner<3, 3>() = random.Rotation(random.Uniform(0.0, 170.0 * lct_test::kPi / 180.0)) *
-        s.asDiagonal() * random.Rotation();
+      m.topLeftCorner<3, 3>() =
+        random.Rotation(random.Uniform(0.0, 170.0 * lct_test::kPi / 180.0)) * s.asDiagonal() *
+        random.Rotation();
       m.topRightCorner<3, 1>() = random.Translation(lct_test::TransformClass::Rigid);
       Eigen::EigenSolver<Eigen::Matrix3d> es(m.topLeftCorner<3, 3>(), false);
       bool negative = false;
@@ -90,22 +92,64 @@ void run(benchmark::State& state, F&& f)
 }
 
 // 4x4 affine log / exp
-void Log4_Polar(benchmark::State& s) { run(s, [](int i) { return lct::polarLog(inputs().affine[i]).value; }); }
-void Log4_MatrixLog(benchmark::State& s) { run(s, [](int i) { return lct::matrixLog(inputs().affine[i]).value; }); }
-void Log4_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix4d(inputs().affine[i].log()); }); }
-void Exp4_Polar(benchmark::State& s) { run(s, [](int i) { return lct::polarExp(inputs().polarLogs[i]).value; }); }
-void Exp4_MatrixLog(benchmark::State& s) { run(s, [](int i) { return lct::matrixExp(inputs().matrixLogs[i]).value; }); }
-void Exp4_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix4d(inputs().eigenLogs[i].exp()); }); }
+void Log4_Polar(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::polarLog(inputs().affine[i]).value; });
+}
+void Log4_MatrixLog(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::matrixLog(inputs().affine[i]).value; });
+}
+void Log4_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix4d(inputs().affine[i].log()); });
+}
+void Exp4_Polar(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::polarExp(inputs().polarLogs[i]).value; });
+}
+void Exp4_MatrixLog(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::matrixExp(inputs().matrixLogs[i]).value; });
+}
+void Exp4_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix4d(inputs().eigenLogs[i].exp()); });
+}
 // 3x3 symmetric / SPD
-void LogSPD3_Ours(benchmark::State& s) { run(s, [](int i) { return lct::logSPD(inputs().spd[i]).value; }); }
-void LogSPD3_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix3d(inputs().spd[i].log()); }); }
-void ExpSym3_Ours(benchmark::State& s) { run(s, [](int i) { return lct::expSym(inputs().sym[i]); }); }
-void ExpSym3_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix3d(inputs().sym[i].exp()); }); }
+void LogSPD3_Ours(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::logSPD(inputs().spd[i]).value; });
+}
+void LogSPD3_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix3d(inputs().spd[i].log()); });
+}
+void ExpSym3_Ours(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::expSym(inputs().sym[i]); });
+}
+void ExpSym3_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix3d(inputs().sym[i].exp()); });
+}
 // so(3)
-void ExpSO3_Ours(benchmark::State& s) { run(s, [](int i) { return lct::expSO3(inputs().rotationVectors[i]); }); }
-void ExpSO3_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix3d(lct::hat(inputs().rotationVectors[i]).exp()); }); }
-void LogSO3_Ours(benchmark::State& s) { run(s, [](int i) { return lct::logSO3(inputs().rotations[i]); }); }
-void LogSO3_Eigen(benchmark::State& s) { run(s, [](int i) { return Eigen::Matrix3d(inputs().rotations[i].log()); }); }
+void ExpSO3_Ours(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::expSO3(inputs().rotationVectors[i]); });
+}
+void ExpSO3_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix3d(lct::hat(inputs().rotationVectors[i]).exp()); });
+}
+void LogSO3_Ours(benchmark::State& s)
+{
+  run(s, [](int i) { return lct::logSO3(inputs().rotations[i]); });
+}
+void LogSO3_Eigen(benchmark::State& s)
+{
+  run(s, [](int i) { return Eigen::Matrix3d(inputs().rotations[i].log()); });
+}
 
 BENCHMARK(Log4_Polar);
 BENCHMARK(Log4_MatrixLog);
@@ -148,9 +192,10 @@ void printAccuracy()
     spdOurs.push_back((lct::expSym(lct::logSPD(s).value) - s).norm() / s.norm());
     spdEigen.push_back((Eigen::Matrix3d(Eigen::Matrix3d(s.log()).exp()) - s).norm() / s.norm());
   }
-  std::printf("\nRound trip exp(log A) vs A on the same %d inputs (relative, linear and translation "
-              "blocks separately; %d candidates with a near-negative eigenvalue skipped so Eigen's "
-              "log is valid):\n",
+  std::printf(
+    "\nRound trip exp(log A) vs A on the same %d inputs (relative, linear and translation "
+    "blocks separately; %d candidates with a near-negative eigenvalue skipped so Eigen's "
+    "log is valid):\n",
     kInputs, in.rejected);
   std::printf("  %-26s %12s %12s\n", "method", "max", "median");
   const std::pair<const char*, Stats> rows[] = { { "4x4 Polar (ours)", stats(polar) },
@@ -165,7 +210,8 @@ void printAccuracy()
 void printRatios(const lct_bench::RecordingReporter& reporter)
 {
   auto get = [&](const std::string& name) { return reporter.Get(name); };
-  std::printf("\nSpeed against Eigen in this run (Eigen time / our time; targets: log >= 20x, exp >= 5x):\n");
+  std::printf(
+    "\nSpeed against Eigen in this run (Eigen time / our time; targets: log >= 20x, exp >= 5x):\n");
   std::printf("  %-22s %10s %10s %8s %8s\n", "operation", "ours ns", "Eigen ns", "ratio", "target");
   const struct
   {

@@ -43,7 +43,8 @@ void addKeys(int n, vtkTransformInterpolatorLCT* ours, vtkTransformInterpolator*
     {
       vtk->AddTransform(k, m);
     }
-    const Eigen::Vector3d s(random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15));
+    const Eigen::Vector3d s(
+      random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15));
     Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
     step.topLeftCorner<3, 3>() = random.Rotation(random.Uniform(0.0, 0.52)) * s.asDiagonal();
     step.topRightCorner<3, 1>() = random.Translation(lct_test::TransformClass::Rigid) / 10.0;
@@ -111,13 +112,34 @@ void Vtk(benchmark::State& state, int type)
   }
 }
 
-void Ours_Linear(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_LINEAR); }
-void Ours_Spline(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
-void Ours_BSpline(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE); }
-void Ours_Subdivision(benchmark::State& s) { Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION); }
-void Ours_Spline_ToMatrix(benchmark::State& s) { Ours<vtkMatrix4x4>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE); }
-void Vtk_Linear(benchmark::State& s) { Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_LINEAR); }
-void Vtk_Spline(benchmark::State& s) { Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_SPLINE); }
+void Ours_Linear(benchmark::State& s)
+{
+  Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_LINEAR);
+}
+void Ours_Spline(benchmark::State& s)
+{
+  Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
+}
+void Ours_BSpline(benchmark::State& s)
+{
+  Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE);
+}
+void Ours_Subdivision(benchmark::State& s)
+{
+  Ours<vtkTransform>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION);
+}
+void Ours_Spline_ToMatrix(benchmark::State& s)
+{
+  Ours<vtkMatrix4x4>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
+}
+void Vtk_Linear(benchmark::State& s)
+{
+  Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_LINEAR);
+}
+void Vtk_Spline(benchmark::State& s)
+{
+  Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_SPLINE);
+}
 
 BENCHMARK(Ours_Linear)->Arg(2)->Arg(10)->Arg(100);
 BENCHMARK(Ours_Spline)->Arg(2)->Arg(10)->Arg(100);
@@ -133,8 +155,9 @@ int main(int argc, char** argv)
   benchmark::Initialize(&argc, argv);
   lct_bench::RecordingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  std::printf("\nInterpolateTransform, ns per call, ours / VTK in this run (target <= 1.0x for Linear "
-              "and Spline):\n");
+  std::printf(
+    "\nInterpolateTransform, ns per call, ours / VTK in this run (target <= 1.0x for Linear "
+    "and Spline):\n");
   std::printf("  %-6s %-12s %10s %10s %8s\n", "keys", "scheme", "ours ns", "VTK ns", "ratio");
   for (int n : { 2, 10, 100 })
   {

@@ -1,6 +1,7 @@
 // Regression image of a camera flight through vtkCameraInterpolatorLCT: a 130-degree turn, a zoom
-// and a shift of the centre of projection, shown at t = 0.25, 0.5, 0.75 (Examples/CameraFlightScene.h).
-// TestCameraFlightVTK shows the same keys through vtkCameraInterpolator, to document the difference.
+// and a shift of the centre of projection, shown at t = 0.25, 0.5, 0.75
+// (Examples/CameraFlightScene.h). TestCameraFlightVTK shows the same keys through
+// vtkCameraInterpolator, to document the difference.
 #include "../../Examples/CameraFlightScene.h"
 #include "RegressionImage.h"
 

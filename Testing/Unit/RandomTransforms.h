@@ -56,9 +56,15 @@ public:
   {
   }
 
-  double Uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(this->Engine); }
+  double Uniform(double lo, double hi)
+  {
+    return std::uniform_real_distribution<double>(lo, hi)(this->Engine);
+  }
   double Normal() { return std::normal_distribution<double>(0.0, 1.0)(this->Engine); }
-  double LogUniform(double lo, double hi) { return std::exp(this->Uniform(std::log(lo), std::log(hi))); }
+  double LogUniform(double lo, double hi)
+  {
+    return std::exp(this->Uniform(std::log(lo), std::log(hi)));
+  }
 
   Eigen::Vector3d UnitVector()
   {

@@ -67,7 +67,8 @@ TEST(BadInput, ReflectionsAndSingularMaps)
     EXPECT_EQ(lct::logarithm(diagonal(0, 0, 0), p).status, Status::NonPositiveDeterminant);
   }
   // Positive but below round-off: numerically singular.
-  EXPECT_EQ(lct::logarithm(diagonal(1, 1e-300, 1), Parametrisation::Polar).status, Status::Singular);
+  EXPECT_EQ(
+    lct::logarithm(diagonal(1, 1e-300, 1), Parametrisation::Polar).status, Status::Singular);
   EXPECT_EQ(lct::polarDecompose(Eigen::Vector3d(1, 1e-300, 1).asDiagonal().toDenseMatrix()).status,
     Status::Singular);
 }
@@ -102,16 +103,19 @@ TEST(BadInput, RelativeCombinationWithBadReference)
 {
   const Eigen::Matrix4d keys[2] = { Eigen::Matrix4d::Identity(), diagonal(-1, 1, 1) };
   const double w[2] = { 0.5, 0.5 };
-  EXPECT_EQ(lct::combineRelative(w, keys, 2, 5, Parametrisation::Polar).status, Status::InvalidArgument);
+  EXPECT_EQ(
+    lct::combineRelative(w, keys, 2, 5, Parametrisation::Polar).status, Status::InvalidArgument);
   EXPECT_EQ(lct::combineRelative(w, keys, 2, 1, Parametrisation::Polar).status,
     Status::NonPositiveDeterminant);
-  EXPECT_EQ(lct::combine(w, keys, 2, Parametrisation::Polar).status, Status::NonPositiveDeterminant);
+  EXPECT_EQ(
+    lct::combine(w, keys, 2, Parametrisation::Polar).status, Status::NonPositiveDeterminant);
 }
 
 TEST(BadInput, EveryStatusHasADescription)
 {
-  for (Status s : { Status::Ok, Status::NonFinite, Status::NotAffine, Status::NonPositiveDeterminant,
-         Status::Singular, Status::NoRealLogarithm, Status::InvalidArgument })
+  for (Status s :
+    { Status::Ok, Status::NonFinite, Status::NotAffine, Status::NonPositiveDeterminant,
+      Status::Singular, Status::NoRealLogarithm, Status::InvalidArgument })
   {
     EXPECT_GT(std::string(lct::describe(s)).size(), 1u);
   }

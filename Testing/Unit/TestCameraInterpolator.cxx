@@ -45,7 +45,8 @@ Eigen::Vector3d get3(const double* v)
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
-/// Position, focal point, view plane normal, orthogonalised up, angle/scale, centre, shear, clipping.
+/// Position, focal point, view plane normal, orthogonalised up, angle/scale, centre, shear,
+/// clipping.
 double cameraDifference(vtkCamera* a, vtkCamera* b)
 {
   double d = 0.0;
@@ -78,7 +79,8 @@ std::vector<CameraKeySpec> randomKeys(int seed, int n)
     k.up = random.UnitVector();
     k.angle = random.Uniform(10.0, 90.0);
     k.center = Eigen::Vector2d(random.Uniform(-0.5, 0.5), random.Uniform(-0.5, 0.5));
-    k.shear = Eigen::Vector3d(random.Uniform(-0.3, 0.3), random.Uniform(-0.3, 0.3), random.Uniform(0.5, 1.5));
+    k.shear = Eigen::Vector3d(
+      random.Uniform(-0.3, 0.3), random.Uniform(-0.3, 0.3), random.Uniform(0.5, 1.5));
     keys.push_back(k);
     t += random.Uniform(0.5, 2.0);
   }
@@ -130,7 +132,8 @@ TEST(CameraInterpolatorLCT, LargeTurnsBetweenKeysNeverFail)
   {
     const Eigen::Vector3d focal(random.Normal(), random.Normal(), random.Normal());
     const Eigen::Vector3d dir = random.UnitVector();
-    const Eigen::Matrix3d turn = random.Rotation(random.Uniform(lct_test::kPi / 2, lct_test::kPi - 1e-6));
+    const Eigen::Matrix3d turn =
+      random.Rotation(random.Uniform(lct_test::kPi / 2, lct_test::kPi - 1e-6));
     const double d0 = random.LogUniform(1.0, 10.0);
     const double d1 = random.LogUniform(1.0, 10.0);
     vtkNew<vtkCamera> a, b;
@@ -158,7 +161,8 @@ TEST(CameraInterpolatorLCT, LargeTurnsBetweenKeysNeverFail)
       continue;
     }
     const double distance = mid->GetDistance();
-    const bool ok = std::isfinite(distance) && std::abs(distance - std::sqrt(d0 * d1)) < 1e-9 * distance &&
+    const bool ok = std::isfinite(distance) &&
+      std::abs(distance - std::sqrt(d0 * d1)) < 1e-9 * distance &&
       (get3(mid->GetFocalPoint()) - focal).norm() < 1e-9;
     failures += ok ? 0 : 1;
     if (!ok && failures == 1)

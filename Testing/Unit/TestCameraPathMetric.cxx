@@ -71,15 +71,16 @@ TEST(CameraPathMetric, QuarterOrbitMatchesTheArcOverChordRatio)
   path->AddCamera(0, a);
   path->AddCamera(1, b);
   ASSERT_EQ(metric->EvaluateInterpolator(path, 0, 1), 1);
-  const double expected = 100.0 * (20.0 * std::sin(4.5 * lct_test::kPi / 180) / (2.0 * std::sin(lct_test::kPi / 4)) - 1.0);
+  const double expected = 100.0 *
+    (20.0 * std::sin(4.5 * lct_test::kPi / 180) / (2.0 * std::sin(lct_test::kPi / 4)) - 1.0);
   EXPECT_NEAR(metric->GetCameraSpaceExcess(), expected, 1e-9);
 }
 
 TEST(CameraPathMetric, PointsLeavingTheView)
 {
   vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);   // at the focal point: always in view
-  points->InsertNextPoint(0, 0, 20);  // behind the camera at the end
+  points->InsertNextPoint(0, 0, 0);  // at the focal point: always in view
+  points->InsertNextPoint(0, 0, 20); // behind the camera at the end
   vtkNew<vtkCollection> cameras;
   vtkNew<vtkCamera> a, b;
   a->SetPosition(0, 0, 30);
@@ -109,7 +110,7 @@ TEST(CameraPathMetric, BadInputIsReported)
   vtkNew<vtkCollection> one;
   one->AddItem(a);
   EXPECT_EQ(metric->EvaluateCameras(one), 0); // one camera
-  one->AddItem(metric); // not a camera
+  one->AddItem(metric);                       // not a camera
   EXPECT_EQ(metric->EvaluateCameras(one), 0);
   EXPECT_EQ(metric->EvaluateInterpolator(nullptr, 0, 1), 0);
   vtkNew<vtkCameraInterpolatorLCT> empty;

@@ -16,7 +16,8 @@ const CurveScheme kAll[] = { CurveScheme::Linear, CurveScheme::CatmullRom, Curve
   CurveScheme::Subdivision };
 
 /// sum_k w_k(t) p_k for scalar key values p.
-double evaluate(CurveScheme s, const std::vector<double>& times, const std::vector<double>& p, double t)
+double evaluate(
+  CurveScheme s, const std::vector<double>& times, const std::vector<double>& p, double t)
 {
   const lct::CurveWeights w = lct::curveWeights(s, times.data(), static_cast<int>(times.size()), t);
   double sum = 0.0;
@@ -113,8 +114,10 @@ TEST(Curves, SplineAndSubdivisionAreC1AcrossKeys)
     for (size_t i = 1; i + 1 < times.size(); ++i)
     {
       const double h = 1e-8;
-      const double left = (evaluate(s, times, p, times[i]) - evaluate(s, times, p, times[i] - h)) / h;
-      const double right = (evaluate(s, times, p, times[i] + h) - evaluate(s, times, p, times[i])) / h;
+      const double left =
+        (evaluate(s, times, p, times[i]) - evaluate(s, times, p, times[i] - h)) / h;
+      const double right =
+        (evaluate(s, times, p, times[i] + h) - evaluate(s, times, p, times[i])) / h;
       const double tolerance = 1e-4;
       EXPECT_NEAR(left, right, tolerance * (1.0 + std::abs(left))) << "key " << i;
     }

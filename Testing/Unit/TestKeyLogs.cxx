@@ -19,8 +19,8 @@ double maxDifference(const lct::KeyLogs& a, const lct::KeyLogs& b, const std::ve
 {
   double worst = 0.0;
   const int n = static_cast<int>(times.size());
-  for (lct::CurveScheme s : { lct::CurveScheme::Linear, lct::CurveScheme::CatmullRom,
-         lct::CurveScheme::Subdivision })
+  for (lct::CurveScheme s :
+    { lct::CurveScheme::Linear, lct::CurveScheme::CatmullRom, lct::CurveScheme::Subdivision })
   {
     for (int k = 0; k <= 50; ++k)
     {
@@ -88,8 +88,8 @@ TEST(KeyLogs, RelativeFormKeepsASharedTranslation)
   std::vector<double> times;
   for (int k = 0; k < 5; ++k)
   {
-    keys.push_back(lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, k * lct_test::kPi / 3)),
-      Eigen::Vector3d(1, 0, 0)));
+    keys.push_back(lct::makeAffine(
+      lct::expSO3(Eigen::Vector3d(0, 0, k * lct_test::kPi / 3)), Eigen::Vector3d(1, 0, 0)));
     times.push_back(k);
   }
   lct::KeyLogs logs;
@@ -117,7 +117,8 @@ TEST(KeyLogs, FailedUpdatesLeaveTheLogsUnchanged)
   halfTurn(1, 1) = -1.0;
   EXPECT_EQ(logs.insert(1, halfTurn, true), lct::Status::NoRealLogarithm);
   EXPECT_EQ(logs.size(), 1u);
-  Eigen::Matrix4d quarter = lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, 1.5)), Eigen::Vector3d::Zero());
+  Eigen::Matrix4d quarter =
+    lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, 1.5)), Eigen::Vector3d::Zero());
   ASSERT_EQ(logs.insert(1, quarter, true), lct::Status::Ok);
   EXPECT_EQ(logs.replace(1, halfTurn, true), lct::Status::NoRealLogarithm);
   EXPECT_EQ(logs.matrix(1), quarter);

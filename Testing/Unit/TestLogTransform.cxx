@@ -66,12 +66,14 @@ TEST(vtkLogTransform, ReproducesTheMatrixItWasSetFrom)
         ASSERT_EQ(w.errors->Count, 1);
         continue;
       }
-      EXPECT_LT(lct_test::blockError(fromVtk(w.transform->GetMatrix()), m), p == vtkLogTransform::POLAR ? 1e-13 : 5e-12);
+      EXPECT_LT(lct_test::blockError(fromVtk(w.transform->GetMatrix()), m),
+        p == vtkLogTransform::POLAR ? 1e-13 : 5e-12);
       double point[3] = { 1.0, -2.0, 0.5 };
       double out[3];
       w.transform->TransformPoint(point, out);
       const Eigen::Vector3d expected = (m * Eigen::Vector4d(1.0, -2.0, 0.5, 1.0)).head<3>();
-      EXPECT_LT((Eigen::Vector3d(out[0], out[1], out[2]) - expected).norm(), 1e-12 * (1 + expected.norm()));
+      EXPECT_LT(
+        (Eigen::Vector3d(out[0], out[1], out[2]) - expected).norm(), 1e-12 * (1 + expected.norm()));
     }
   }
 }
@@ -110,7 +112,8 @@ TEST(vtkLogTransform, ScaleAddInterpolateAndLinearCombination)
   combination->AddObserver(vtkCommand::ErrorEvent, errors);
   ASSERT_EQ(vtkLogTransform::LinearCombination(items, weights, combination), 1) << errors->Last;
   // 1 (.) A (+) (-1/2)(.)(2 (.) A) = identity.
-  EXPECT_LT(lct_test::blockError(fromVtk(combination->GetMatrix()), Eigen::Matrix4d::Identity()), 1e-14);
+  EXPECT_LT(
+    lct_test::blockError(fromVtk(combination->GetMatrix()), Eigen::Matrix4d::Identity()), 1e-14);
 
   // Mixed parametrisations: inputs are converted to the result's, from their matrices. (The
   // polar 2 (.) A is not the MatrixLog 2 (.) A, so the result is not the identity.)

@@ -96,13 +96,14 @@ TEST_P(EveryClass, PolarLogMatchesEigenOnItsFactors)
     ASSERT_TRUE(c.ok());
     const double cond = svd.singularValues()[0] / svd.singularValues()[2];
     worstStretch = std::max(worstStretch,
-      (lct::fromSymmetricVector(lct::symmetricPart(c.value)) - s.log()).norm() / std::max(1.0, s.log().norm()) / cond);
+      (lct::fromSymmetricVector(lct::symmetricPart(c.value)) - s.log()).norm() /
+        std::max(1.0, s.log().norm()) / cond);
     // Eigen's log drops the rotation at exactly pi, and near pi the log amplifies round-off
     // by t / sin t: compare up to 3 rad (amplification <= 21).
     if (lct::rotationPart(c.value).norm() < 3.0)
     {
-      worstRotation = std::max(worstRotation,
-        (lct::hat(lct::rotationPart(c.value)) - u.log()).norm() / cond);
+      worstRotation =
+        std::max(worstRotation, (lct::hat(lct::rotationPart(c.value)) - u.log()).norm() / cond);
     }
   }
   EXPECT_LT(worstRotation, 1e-13) << lct_test::className(GetParam());
@@ -174,7 +175,8 @@ TEST_P(EveryClass, MatrixLogMatchesEigen)
       d.cwiseInverse().asDiagonal() * Eigen::Matrix4d(balanced.log()) * d.asDiagonal();
     worstLog = std::max(worstLog, lct_test::blockError(logMatrix(c.value), oracleLog));
     const Eigen::Matrix4d oracleExp = d.cwiseInverse().asDiagonal() *
-      Eigen::Matrix4d((d.asDiagonal() * oracleLog * d.cwiseInverse().asDiagonal()).exp()) * d.asDiagonal();
+      Eigen::Matrix4d((d.asDiagonal() * oracleLog * d.cwiseInverse().asDiagonal()).exp()) *
+      d.asDiagonal();
     const auto ours = lct::matrixExp(c.value);
     worstExp = std::max(worstExp, lct_test::blockError(ours.value, oracleExp));
   }
@@ -184,7 +186,9 @@ TEST_P(EveryClass, MatrixLogMatchesEigen)
 }
 
 INSTANTIATE_TEST_SUITE_P(Aff3, EveryClass, ::testing::ValuesIn(kAllClasses),
-  [](const ::testing::TestParamInfo<TransformClass>& info) { return lct_test::className(info.param); });
+  [](const ::testing::TestParamInfo<TransformClass>& info) {
+    return lct_test::className(info.param);
+  });
 
 TEST(Polar, LogOfExpRoundTrip)
 {
@@ -303,8 +307,10 @@ TEST(Alexa, SumOfCommutingTransformsIsTheirProduct)
     ASSERT_LT(lct_test::blockError(sum(pa, pb, Parametrisation::MatrixLog), pa * pb), 1e-13);
     // Polar: coaxial rotations and coaxial stretches commute and add.
     const Eigen::Vector3d axis = random.UnitVector();
-    const Eigen::Matrix4d ra = lct::makeAffine(lct::expSO3(a * 2.0 * axis), Eigen::Vector3d::Zero());
-    const Eigen::Matrix4d rb = lct::makeAffine(lct::expSO3(b * 2.0 * axis), Eigen::Vector3d::Zero());
+    const Eigen::Matrix4d ra =
+      lct::makeAffine(lct::expSO3(a * 2.0 * axis), Eigen::Vector3d::Zero());
+    const Eigen::Matrix4d rb =
+      lct::makeAffine(lct::expSO3(b * 2.0 * axis), Eigen::Vector3d::Zero());
     ASSERT_LT(lct_test::blockError(sum(ra, rb, Parametrisation::Polar), ra * rb), 1e-14);
   }
 }
@@ -346,7 +352,8 @@ TEST(Alexa, DeterminantOfSumIsProductOfDeterminantsAndSumCommutes)
       const Eigen::Matrix4d b = lct::exponential(cb, p).value;
       const Eigen::Matrix4d ab = sum(a, b, p);
       const Eigen::Matrix4d ba = sum(b, a, p);
-      const double expected = a.topLeftCorner<3, 3>().determinant() * b.topLeftCorner<3, 3>().determinant();
+      const double expected =
+        a.topLeftCorner<3, 3>().determinant() * b.topLeftCorner<3, 3>().determinant();
       ASSERT_NEAR((ab.topLeftCorner<3, 3>().determinant() / expected), 1.0, 1e-13);
       ASSERT_EQ(ab, ba);
     }
@@ -380,7 +387,8 @@ TEST(Polar, BlendsStayInTheirSubgroup)
       w[k] = random.Uniform(-1.0, 2.0);
       rigid[k] = random.Affine(TransformClass::Rigid);
       similar[k] = random.Affine(TransformClass::Similarity);
-      linear[k] = lct::makeAffine(random.Linear(TransformClass::GeneralAffine), Eigen::Vector3d::Zero());
+      linear[k] =
+        lct::makeAffine(random.Linear(TransformClass::GeneralAffine), Eigen::Vector3d::Zero());
     }
     const auto r = lct::combine(w, rigid, n, Parametrisation::Polar);
     const auto s = lct::combine(w, similar, n, Parametrisation::Polar);
@@ -391,8 +399,8 @@ TEST(Polar, BlendsStayInTheirSubgroup)
     rigidError = std::max(rigidError, std::abs(rr.determinant() - 1.0));
     const Eigen::Matrix3d ss = s.value.topLeftCorner<3, 3>();
     const Eigen::Matrix3d gram = ss.transpose() * ss;
-    similarityError = std::max(similarityError,
-      (gram / (gram.trace() / 3.0) - Eigen::Matrix3d::Identity()).norm());
+    similarityError =
+      std::max(similarityError, (gram / (gram.trace() / 3.0) - Eigen::Matrix3d::Identity()).norm());
     linearError = std::max(linearError, l.value.topRightCorner<3, 1>().norm());
   }
   EXPECT_LT(rigidError, 1e-13);
@@ -409,8 +417,10 @@ TEST(HawkinsGrimm, LargeRotationWithNonUniformScaleNeverFails)
   double worst = 0.0;
   for (int i = 0; i < 1000; ++i)
   {
-    const Eigen::Vector3d scale(random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0));
-    const Eigen::Matrix3d linear = random.Rotation(random.Uniform(lct_test::kPi / 2, lct_test::kPi)) * scale.asDiagonal();
+    const Eigen::Vector3d scale(
+      random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0), random.LogUniform(0.2, 5.0));
+    const Eigen::Matrix3d linear =
+      random.Rotation(random.Uniform(lct_test::kPi / 2, lct_test::kPi)) * scale.asDiagonal();
     const Eigen::Matrix4d key = lct::makeAffine(linear, random.Translation(TransformClass::Rigid));
     // Interpolate from the identity to the key at t = 0.5 and back to the key at t = 1.
     const Eigen::Matrix4d keys[2] = { Eigen::Matrix4d::Identity(), key };
@@ -450,7 +460,8 @@ TEST(Combination, RelativeFormReproducesTheReferenceAndTakesTheShortWay)
   // through 180), the absolute midpoint the identity (long way through 0).
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
   const double angle = 170.0 * lct_test::kPi / 180.0;
-  const Eigen::Matrix4d keys[2] = { lct::makeAffine(lct::expSO3(angle * z), Eigen::Vector3d::Zero()),
+  const Eigen::Matrix4d keys[2] = { lct::makeAffine(
+                                      lct::expSO3(angle * z), Eigen::Vector3d::Zero()),
     lct::makeAffine(lct::expSO3(-angle * z), Eigen::Vector3d::Zero()) };
   const double half[2] = { 0.5, 0.5 };
   const auto relative = lct::combineRelative(half, keys, 2, 0, Parametrisation::Polar);
@@ -477,8 +488,10 @@ TEST(MatrixLog, PowerMatchesExpOfScaledLogNearAndFarFromIdentity)
   for (int i = 0; i < 20000; ++i)
   {
     // Half of them near the identity (the binomial series), half generic.
-    Eigen::Matrix4d m = (i % 2) ? random.Affine(TransformClass::GeneralAffine)
-                                : lct::matrixExp(0.05 * lct::matrixLog(random.Affine(TransformClass::Similarity)).value).value;
+    Eigen::Matrix4d m = (i % 2)
+      ? random.Affine(TransformClass::GeneralAffine)
+      : lct::matrixExp(0.05 * lct::matrixLog(random.Affine(TransformClass::Similarity)).value)
+          .value;
     if (nearNegativeRealAxis(m, std::sqrt(0.5)))
     {
       continue;
@@ -490,7 +503,8 @@ TEST(MatrixLog, PowerMatchesExpOfScaledLogNearAndFarFromIdentity)
     worst = std::max(worst, lct_test::blockError(power.value, reference.value));
   }
   EXPECT_LT(worst, 1e-13);
-  EXPECT_EQ(lct::matrixPower(Eigen::Matrix4d::Identity(), std::nan("")).status, lct::Status::NonFinite);
+  EXPECT_EQ(
+    lct::matrixPower(Eigen::Matrix4d::Identity(), std::nan("")).status, lct::Status::NonFinite);
 }
 
 TEST(Polar, RigidMapsHaveAnExactlyZeroStretch)

@@ -16,7 +16,8 @@ TEST(SO3, ExpMatchesEigenMatrixExponential)
   for (int i = 0; i < 20000; ++i)
   {
     // Angles from 1e-12 to 3 pi, including the series branch and beyond one turn.
-    const double angle = (i % 4 == 0) ? random.LogUniform(1e-12, 1e-3) : random.Uniform(0.0, 3 * kPi);
+    const double angle =
+      (i % 4 == 0) ? random.LogUniform(1e-12, 1e-3) : random.Uniform(0.0, 3 * kPi);
     const Eigen::Vector3d w = angle * random.UnitVector();
     const Eigen::Matrix3d oracle = lct::hat(w).exp();
     worst = std::max(worst, (lct::expSO3(w) - oracle).norm());

@@ -15,7 +15,8 @@
 namespace
 {
 /// Q diag(l) Q^T with a random rotation Q.
-Eigen::Matrix3d symmetricWithEigenvalues(lct_test::RandomTransforms& random, const Eigen::Vector3d& l)
+Eigen::Matrix3d symmetricWithEigenvalues(
+  lct_test::RandomTransforms& random, const Eigen::Vector3d& l)
 {
   const Eigen::Matrix3d q = random.Rotation();
   Eigen::Matrix3d m = q * l.asDiagonal() * q.transpose();
@@ -30,9 +31,11 @@ Eigen::Vector3d eigenvalueSet(lct_test::RandomTransforms& random, int i, double 
   switch (i % 4)
   {
     case 0:
-      return Eigen::Vector3d(base, base + gap * random.Uniform(-1, 1), random.Uniform(-spread, spread));
+      return Eigen::Vector3d(
+        base, base + gap * random.Uniform(-1, 1), random.Uniform(-spread, spread));
     case 1:
-      return Eigen::Vector3d(base, base + gap * random.Uniform(-1, 1), base + gap * random.Uniform(-1, 1));
+      return Eigen::Vector3d(
+        base, base + gap * random.Uniform(-1, 1), base + gap * random.Uniform(-1, 1));
     case 2:
       return Eigen::Vector3d(base, base, base);
     default:
@@ -96,9 +99,18 @@ Eigen::Matrix3d reference(long double (*f)(long double), const Eigen::Matrix3d& 
   }
   return (es.eigenvectors() * l.asDiagonal() * es.eigenvectors().transpose()).cast<double>();
 }
-long double expl_(long double x) { return std::exp(x); }
-long double logl_(long double x) { return std::log(x); }
-long double sqrtl_(long double x) { return std::sqrt(x); }
+long double expl_(long double x)
+{
+  return std::exp(x);
+}
+long double logl_(long double x)
+{
+  return std::log(x);
+}
+long double sqrtl_(long double x)
+{
+  return std::sqrt(x);
+}
 
 struct Errors
 {

@@ -39,10 +39,13 @@ std::vector<std::pair<double, Eigen::Matrix4d>> shearedKeys(int seed, int n)
   double t = 0.0;
   for (int i = 0; i < n; ++i)
   {
-    const Eigen::Vector3d s(random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0));
-    const Eigen::Matrix3d linear = lct::expSO3(Eigen::Vector3d(0, 0, 1.1 * i) + 0.2 * random.UnitVector()) *
+    const Eigen::Vector3d s(
+      random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0), random.LogUniform(0.5, 2.0));
+    const Eigen::Matrix3d linear =
+      lct::expSO3(Eigen::Vector3d(0, 0, 1.1 * i) + 0.2 * random.UnitVector()) *
       random.Rotation(0.4) * s.asDiagonal() * random.Rotation(0.4).transpose();
-    keys.emplace_back(t, lct::makeAffine(linear, random.Translation(lct_test::TransformClass::Rigid)));
+    keys.emplace_back(
+      t, lct::makeAffine(linear, random.Translation(lct_test::TransformClass::Rigid)));
     t += random.Uniform(0.5, 2.0);
   }
   return keys;
@@ -114,7 +117,8 @@ TEST(TransformInterpolatorLCT, SplineReproducesRotationKeysThatVtkDefaultSplineM
   {
     vtkNew<vtkTransform> out;
     ASSERT_EQ(ours->InterpolateTransform(k, out), 1);
-    const double angle = std::atan2(out->GetMatrix()->GetElement(1, 0), out->GetMatrix()->GetElement(0, 0));
+    const double angle =
+      std::atan2(out->GetMatrix()->GetElement(1, 0), out->GetMatrix()->GetElement(0, 0));
     EXPECT_NEAR(angle * 180.0 / lct_test::kPi, 30.0 * k, 1e-11);
   }
 }
@@ -182,7 +186,8 @@ TEST(TransformInterpolatorLCT, SplineAndSubdivisionAreC1AcrossKeys)
       {
         const double left = (cb[i] - ca[i]) / h;
         const double right = (cc[i] - cb[i]) / h;
-        EXPECT_NEAR(left, right, 2e-2 * (1.0 + std::abs(left))) << "type " << type << " key " << k << " coordinate " << i;
+        EXPECT_NEAR(left, right, 2e-2 * (1.0 + std::abs(left)))
+          << "type " << type << " key " << k << " coordinate " << i;
       }
     }
   }
@@ -236,7 +241,8 @@ TEST(TransformInterpolatorLCT, ShortWayByDefaultSpinWithConsistentRotation)
 TEST(TransformInterpolatorLCT, VtkSemanticsClampReplaceRemoveAndMTime)
 {
   vtkNew<vtkTransformInterpolatorLCT> interpolator;
-  EXPECT_EQ(interpolator->GetInterpolationType(), vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
+  EXPECT_EQ(
+    interpolator->GetInterpolationType(), vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
   vtkNew<vtkTransform> a, b, c;
   a->Translate(1, 0, 0);
   b->Translate(0, 2, 0);
@@ -358,7 +364,8 @@ TEST(TransformInterpolatorLCT, BezierFollowsItsControlTransforms)
 {
   vtkNew<vtkTransformInterpolatorLCT> interpolator;
   interpolator->SetInterpolationTypeToBezier();
-  EXPECT_EQ(interpolator->GetInterpolationType(), vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER);
+  EXPECT_EQ(
+    interpolator->GetInterpolationType(), vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER);
   vtkNew<vtkTransform> k0, k1;
   k1->Translate(1, 0, 0);
   ASSERT_EQ(interpolator->AddTransform(0.0, k0), 1);
