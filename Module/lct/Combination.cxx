@@ -31,9 +31,9 @@ std::size_t largestWeight(const double* weights, std::size_t count) noexcept
 
 namespace
 {
-/// exp(sum_i w_i log(T_i X)) with X = I or R^-1.
+/// exp(sum_i w_i log(X T_i)) with X = I or R^-1.
 Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4d* keys,
-  std::size_t count, const Eigen::Matrix4d& rightFactor, Parametrisation p)
+  std::size_t count, const Eigen::Matrix4d& leftFactor, Parametrisation p)
 {
   LogCoords sum = LogCoords::Zero();
   for (std::size_t i = 0; i < count; ++i)
@@ -42,7 +42,7 @@ Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4
     {
       continue;
     }
-    const auto logKey = logarithm(keys[i] * rightFactor, p);
+    const auto logKey = logarithm(leftFactor * keys[i], p);
     if (!logKey)
     {
       return Result<Eigen::Matrix4d>::failure(logKey.status);
@@ -74,7 +74,7 @@ Result<Eigen::Matrix4d> combineRelative(const double* weights, const Eigen::Matr
   auto relative = combineTimes(weights, keys, count, inverseAffine(keys[reference]), p);
   if (relative)
   {
-    relative.value = relative.value * keys[reference];
+    relative.value = keys[reference] * relative.value;
   }
   return relative;
 }

@@ -8,7 +8,7 @@
  *   (+)_i w_i (.) T_i  = exp(sum_i w_i log T_i)
  *
  * The absolute form combines the logs of the keys themselves. The relative form combines
- * about a reference key R:  exp(sum_i w_i log(T_i R^-1)) R  (weights summing to 1), so
+ * about a reference key R:  R exp(sum_i w_i log(R^-1 T_i))  (weights summing to 1), so
  * that R sits at the identity, where both logs are best conditioned, and rotations between
  * a key and R are taken the short way. Hawkins & Grimm put the key with the largest weight
  * at the identity.
@@ -42,7 +42,9 @@ inline LogCoords lerp(const LogCoords& a, const LogCoords& b, double t)
 VTKLCT_EXPORT Result<Eigen::Matrix4d> combine(
   const double* weights, const Eigen::Matrix4d* keys, std::size_t count, Parametrisation p);
 
-/// exp(sum_i w_i log(T_i R^-1)) R with R = keys[reference] (Hawkins & Grimm eq. 7).
+/// R exp(sum_i w_i log(R^-1 T_i)) with R = keys[reference]: Hawkins & Grimm eq. 7 taken in the
+/// reference's own frame, so that the Polar translation part combines as sum_i w_i t_i (see
+/// lct/KeyLogs.h); the same as their world-frame form for the matrix log.
 VTKLCT_EXPORT Result<Eigen::Matrix4d> combineRelative(const double* weights,
   const Eigen::Matrix4d* keys, std::size_t count, std::size_t reference, Parametrisation p);
 

@@ -471,6 +471,22 @@ TEST(Combination, RelativeFormReproducesTheReferenceAndTakesTheShortWay)
   EXPECT_NEAR(absolute.value(0, 0), 1.0, 1e-14);
 }
 
+TEST(Combination, RelativeFormKeepsASharedTranslation)
+{
+  // In the reference's own frame the Polar translation part combines as sum w t_i.
+  const Eigen::Matrix4d keys[2] = {
+    lct::makeAffine(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 0, 0)),
+    lct::makeAffine(lct::expSO3(Eigen::Vector3d(0, 0, lct_test::kPi / 3)), Eigen::Vector3d(1, 0, 0))
+  };
+  const double half[2] = { 0.5, 0.5 };
+  for (std::size_t reference : { 0u, 1u })
+  {
+    const auto r = lct::combineRelative(half, keys, 2, reference, Parametrisation::Polar);
+    ASSERT_TRUE(r.ok());
+    EXPECT_LT((r.value.topRightCorner<3, 1>() - Eigen::Vector3d(1, 0, 0)).norm(), 1e-15);
+  }
+}
+
 TEST(Combination, WeightedSumAndLerp)
 {
   lct::LogCoords a = lct::LogCoords::LinSpaced(1.0, 12.0);
