@@ -7,8 +7,9 @@ Run by CTest with /usr/bin/python3 and the build tree on PYTHONPATH.
 import math
 import unittest
 
+from lct_testing import ErrorRecorder
+
 from vtklct import vtkCameraInterpolatorLCT, vtkTransformInterpolatorLCT
-from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkTransformInterpolator
@@ -30,15 +31,6 @@ def sheared_key(k):
     t.RotateWXYZ(55.0 * k, 0.3, 1.0, 0.2)
     t.Translate(k, 0.5 * k, 0.0)
     return t
-
-
-class ErrorCounter:
-    def __init__(self, obj):
-        self.count = 0
-        obj.AddObserver(vtkCommand.ErrorEvent, self)
-
-    def __call__(self, caller, event):
-        self.count += 1
 
 
 class TransformInterpolator(unittest.TestCase):
@@ -80,7 +72,7 @@ class TransformInterpolator(unittest.TestCase):
         self.assertEqual(self.lct.GetMaximumT(), 4.0)
 
     def test_bad_keys(self):
-        errors = ErrorCounter(self.lct)
+        errors = ErrorRecorder(self.lct)
         for bad in ((0, 1, float("nan")), (2, 2, -1.0), (3, 0, 0.5)):
             m = vtkMatrix4x4()
             m.SetElement(*bad)
@@ -88,7 +80,7 @@ class TransformInterpolator(unittest.TestCase):
         self.assertEqual(errors.count, 3)
         self.assertEqual(self.lct.GetNumberOfTransforms(), 5)
         empty = vtkTransformInterpolatorLCT()
-        empty_errors = ErrorCounter(empty)
+        empty_errors = ErrorRecorder(empty)
         self.assertEqual(empty.InterpolateTransform(0.0, vtkTransform()), 0)
         self.assertEqual(empty_errors.count, 1)
 
@@ -119,7 +111,7 @@ class CameraInterpolator(unittest.TestCase):
 
     def test_bad_cameras(self):
         path = vtkCameraInterpolatorLCT()
-        errors = ErrorCounter(path)
+        errors = ErrorRecorder(path)
         degenerate = vtkCamera()
         degenerate.SetPosition(0, 0, 0)
         degenerate.SetFocalPoint(0, 0, 0)

@@ -7,10 +7,10 @@ error, including a failed `from vtklct import vtkLogTransform`.
 import math
 import unittest
 
+from lct_testing import ErrorRecorder
+
 from vtklct import vtkLogTransform
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import vtkCollection, vtkCommand, vtkDoubleArray
+from vtkmodules.vtkCommonCore import vtkCollection, vtkDoubleArray
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 from vtkmodules.vtkCommonTransforms import vtkLinearTransform, vtkTransform
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
@@ -65,21 +65,6 @@ def coordinates(lt):
     c = [0.0] * 12
     lt.GetLogCoordinates(c)
     return c
-
-
-class ErrorRecorder:
-    """Observer for vtkCommand.ErrorEvent that keeps the messages (and silences the output)."""
-
-    def __init__(self, obj):
-        self.messages = []
-
-        # VTK looks for the call data type on the callback itself: use a decorated function.
-        @calldata_type(VTK_STRING)
-        def on_error(caller, event, message):
-            self.messages.append(message)
-
-        self.callback = on_error
-        obj.AddObserver(vtkCommand.ErrorEvent, on_error)
 
 
 class LogTransformTestCase(unittest.TestCase):

@@ -14,9 +14,9 @@ exits non-zero on any failure or error, including a failed `from vtklct import .
 import math
 import unittest
 
+from lct_testing import ErrorRecorder
+
 from vtklct import vtkLogTransform, vtkTransformInterpolatorLCT
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkAnimationCue, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkAnimationScene
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
@@ -80,21 +80,6 @@ def interpolate(interpolator, t):
     m = vtkMatrix4x4()
     assert interpolator.InterpolateTransform(t, m) == 1, f"InterpolateTransform({t}) failed"
     return elements(m)
-
-
-class ErrorRecorder:
-    """Observer for vtkCommand.ErrorEvent that keeps the messages (and silences the output)."""
-
-    def __init__(self, obj):
-        self.messages = []
-
-        # VTK looks for the call data type on the callback itself: use a decorated function.
-        @calldata_type(VTK_STRING)
-        def on_error(caller, event, message):
-            self.messages.append(message)
-
-        self.callback = on_error
-        obj.AddObserver(vtkCommand.ErrorEvent, on_error)
 
 
 class InterpolatorTestCase(unittest.TestCase):
