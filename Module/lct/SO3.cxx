@@ -26,11 +26,14 @@ Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
   }
   else
   {
+    // One sincos of the half angle gives all three: sin t = 2 s c, 1 - cos t = 2 s^2.
     const double theta = std::sqrt(theta2);
-    const double s = std::sin(0.5 * theta) / (0.5 * theta);
-    sinc = std::sin(theta) / theta;
+    const double halfSin = std::sin(0.5 * theta);
+    const double halfCos = std::cos(0.5 * theta);
+    const double s = halfSin / (0.5 * theta);
+    sinc = halfSin * halfCos / (0.5 * theta);
     halfSincSq2 = 0.5 * s * s;
-    cosTheta = std::cos(theta);
+    cosTheta = 1.0 - 2.0 * halfSin * halfSin;
   }
   // R = cos t I + sinc hat(w) + (1 - cos t)/t^2 w w^T   (hat(w)^2 = w w^T - t^2 I)
   Eigen::Matrix3d r = halfSincSq2 * (w * w.transpose());

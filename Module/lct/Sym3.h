@@ -12,6 +12,10 @@
  * eigenvalues nearly coincide, so the result keeps full accuracy there too (the naive form
  * of eq. 7 loses about six digits).
  *
+ * exp of a Y whose traceless part Z is small (||Z||_F <= 1, the usual case for the relative
+ * logs of interpolation) skips the cubic: Cayley-Hamilton (Z^3 = p Z + q I) folds the
+ * exponential series of Z onto three scalars, e^(tr Y / 3) (a I + b Z + c Z^2).
+ *
  * Accuracy: about eps * cond(Y) relative; see Testing/Unit/TestSym3.cxx for the measured
  * errors against Eigen's MatrixFunctions.
  */
