@@ -1,5 +1,6 @@
 // A Google Benchmark console reporter that also keeps each benchmark's adjusted real time per
-// iteration (ns), so a program can print ratios between benchmarks of the same run.
+// iteration (ns; the median when the benchmark has repetitions), so a program can print ratios
+// between benchmarks of the same run.
 #ifndef lct_bench_RecordingReporter_h
 #define lct_bench_RecordingReporter_h
 
@@ -21,7 +22,16 @@ public:
   {
     for (const Run& run : runs)
     {
-      this->nanoseconds[run.benchmark_name()] = run.GetAdjustedRealTime();
+      // With repetitions, the median of the repetitions stands for the benchmark: a ratio of
+      // two medians is stable on a shared machine where single runs drift by 10 %.
+      if (run.run_type == Run::RT_Iteration)
+      {
+        this->nanoseconds.emplace(run.run_name.str(), run.GetAdjustedRealTime());
+      }
+      else if (run.aggregate_name == "median")
+      {
+        this->nanoseconds[run.run_name.str()] = run.GetAdjustedRealTime();
+      }
     }
     ConsoleReporter::ReportRuns(runs);
   }
