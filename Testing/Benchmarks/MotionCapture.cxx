@@ -26,6 +26,7 @@
 #include "vtkTransformInterpolatorLCT.h"
 
 #include "lct/Affine.h"
+#include "lct/Combination.h"
 #include "lct/Curves.h"
 #include "lct/Parametrisation.h"
 
@@ -150,11 +151,14 @@ public:
       CoreKeys& c = this->Core[joint];
       c.times.push_back(t);
       c.matrices.push_back(Eigen::Map<const RowMajor4>(key->GetData()));
-      const auto log = lct::logarithm(c.matrices.back(), lct::Parametrisation::Polar);
-      c.logs.push_back(log.value);
-      if (!log)
+      if (this->M.library == Library::PolarAbsolute)
       {
-        this->RejectedKeys.emplace_back(joint, t);
+        const auto log = lct::logarithm(c.matrices.back(), lct::Parametrisation::Polar);
+        c.logs.push_back(log.value);
+        if (!log)
+        {
+          this->RejectedKeys.emplace_back(joint, t);
+        }
       }
     }
     else if (this->M.library == Library::VTK)
@@ -204,7 +208,7 @@ private:
   {
     std::vector<double> times;
     std::vector<Eigen::Matrix4d> matrices;
-    std::vector<lct::LogCoords> logs; ///< absolute Polar logs
+    std::vector<lct::LogCoords> logs; ///< absolute Polar logs (PolarAbsolute only)
   };
 
   /// Catmull-Rom weights (the same as LCT Spline's), combined without vtkLCT's choices: no
@@ -215,20 +219,23 @@ private:
     const lct::CurveWeights w = lct::curveWeights(
       lct::CurveScheme::CatmullRom, c.times.data(), static_cast<int>(c.times.size()), t);
     lct::LogCoords sum = lct::LogCoords::Zero();
-    int reference = 0;
-    for (int j = 1; j < w.count; ++j)
+    if (this->M.library == Library::PolarAbsolute)
     {
-      reference = w.weight[j] > w.weight[reference] ? j : reference;
+      for (int j = 0; j < w.count; ++j)
+      {
+        sum += w.weight[j] * c.logs[w.key[j]];
+      }
+      const auto m = lct::exponential(sum, lct::Parametrisation::Polar);
+      if (m)
+      {
+        out = m.value;
+      }
+      return m.ok();
     }
-    const Eigen::Matrix4d referenceKey = c.matrices[w.key[reference]];
+    const Eigen::Matrix4d& referenceKey = c.matrices[w.key[lct::largestWeight(w.weight, w.count)]];
     const Eigen::Matrix4d referenceInverse = lct::inverseAffine(referenceKey);
     for (int j = 0; j < w.count; ++j)
     {
-      if (this->M.library == Library::PolarAbsolute)
-      {
-        sum += w.weight[j] * c.logs[w.key[j]];
-        continue;
-      }
       const auto log =
         lct::logarithm(c.matrices[w.key[j]] * referenceInverse, lct::Parametrisation::Polar);
       if (!log)
@@ -238,13 +245,11 @@ private:
       sum += w.weight[j] * log.value;
     }
     const auto m = lct::exponential(sum, lct::Parametrisation::Polar);
-    if (!m)
+    if (m)
     {
-      return false;
+      out = m.value * referenceKey;
     }
-    out =
-      this->M.library == Library::PolarAbsolute ? m.value : Eigen::Matrix4d(m.value * referenceKey);
-    return true;
+    return m.ok();
   }
 
   const Method& M;
