@@ -1,5 +1,7 @@
 #include "lct/Affine.h"
 
+#include "lct/PolarDecomposition.h"
+
 #include <Eigen/LU>
 
 namespace lct
@@ -15,11 +17,15 @@ Status validateAffine(const Eigen::Matrix4d& m)
   {
     return Status::NotAffine;
   }
-  if (!(m.topLeftCorner<3, 3>().determinant() > 0.0))
+  // The sign is decided at unit scale and with exact minors when close to 0: a plain determinant
+  // of 1e-120 I underflows to 0, and one of a rotated stretch of condition 1e12 may have either
+  // sign.
+  const int sign = determinantSign(m.topLeftCorner<3, 3>());
+  if (sign < 0)
   {
-    return Status::NonPositiveDeterminant;
+    return Status::NegativeDeterminant;
   }
-  return Status::Ok;
+  return sign == 0 ? Status::Singular : Status::Ok;
 }
 
 Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m)

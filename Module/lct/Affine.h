@@ -17,7 +17,8 @@
 namespace lct
 {
 
-/// Ok, NonFinite, NotAffine (bottom row not (0,0,0,1)) or NonPositiveDeterminant.
+/// Ok, NonFinite, NotAffine (bottom row not (0,0,0,1)), NegativeDeterminant or Singular
+/// (det = 0). Conditioning is checked by the logarithms, not here.
 VTKLCT_EXPORT Status validateAffine(const Eigen::Matrix4d& m);
 
 /// [linear translation; 0 0 0 1]

@@ -115,7 +115,7 @@ Result<CameraParameters> fromCameraMatrix(const Eigen::Matrix4d& m, const Camera
   const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
   if (!(a.determinant() > 0.0))
   {
-    return R::failure(Status::NonPositiveDeterminant);
+    return R::failure(Status::NegativeDeterminant);
   }
   // RQ by QR of the row-reversed transpose: with J the exchange matrix, (J A)^T = Q U gives
   // A = (J U^T J)(J Q^T) with J U^T J upper triangular.

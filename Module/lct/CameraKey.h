@@ -94,7 +94,7 @@ VTKLCT_EXPORT Eigen::Matrix4d cameraMatrix(const CameraParameters& camera);
 
 /// The camera of a camera matrix (RQ decomposition of its linear part), with the distance,
 /// parallel scale, view shear, clipping range and projection type taken from `rest`.
-/// Fails with NonFinite or NonPositiveDeterminant for matrices that are no camera.
+/// Fails with NonFinite or NegativeDeterminant for matrices that are no camera.
 VTKLCT_EXPORT Result<CameraParameters> fromCameraMatrix(
   const Eigen::Matrix4d& matrix, const CameraParameters& rest);
 

@@ -1,5 +1,7 @@
 #include "lct/Eigenvalues3.h"
 
+#include "lct/Conditioning.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -13,8 +15,29 @@ namespace
 constexpr double kTwoPiOver3 = 2.0943951023931954923;
 }
 
+namespace
+{
+/// Entries beyond 2^±400 would overflow or underflow the cubic's coefficients (cubes of them):
+/// such matrices are scaled by a power of two, which scales the eigenvalues exactly.
+bool needsScaling(const Eigen::Matrix3d& a, int& exponent)
+{
+  const double largest = a.cwiseAbs().maxCoeff();
+  if (!(largest > 0x1p-400 && largest < 0x1p400) && largest > 0.0 && std::isfinite(largest))
+  {
+    exponent = unitScaleExponent(a);
+    return true;
+  }
+  return false;
+}
+} // namespace
+
 Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
 {
+  int exponent = 0;
+  if (needsScaling(a, exponent))
+  {
+    return scaledByPowerOfTwo(symmetricEigenvalues(scaledByPowerOfTwo(a, -exponent)), exponent);
+  }
   const double shift = a.trace() / 3.0;
   const double b00 = a(0, 0) - shift;
   const double b11 = a(1, 1) - shift;
@@ -47,6 +70,17 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
 
 GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
 {
+  int exponent = 0;
+  if (needsScaling(a, exponent))
+  {
+    GeneralEigenvalues out = generalEigenvalues(scaledByPowerOfTwo(a, -exponent));
+    for (auto& value : out.values)
+    {
+      value = std::complex<double>(
+        std::ldexp(value.real(), exponent), std::ldexp(value.imag(), exponent));
+    }
+    return out;
+  }
   const double shift = a.trace() / 3.0;
   Eigen::Matrix3d b = a;
   b.diagonal().array() -= shift;

@@ -1,10 +1,16 @@
 #include "lct/MatrixLogParametrisation.h"
 
+#include "lct/AccurateMinors.h"
 #include "lct/Affine.h"
+#include "lct/Conditioning.h"
 #include "lct/DividedDifferences.h"
 #include "lct/Eigenvalues3.h"
 #include "lct/SO3.h"
+#include "lct/SVD3.h"
 #include "lct/Sym3.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -18,60 +24,138 @@ namespace
 
 using Complex = std::complex<double>;
 
-/// f(A) = constant I + linear A + quadratic (A^2 - sum A + product I): the Newton form
-/// f[z0] + f[z0,z1](A - z0) + f[z0,z1,z2](A - z0)(A - z1) regrouped with real coefficients
-/// (the nodes are closed under conjugation, z0 and z1 being the pair when there is one).
-struct RealNewtonForm
-{
-  double constant;
-  double linear;
-  double quadratic;
-
-  Eigen::Matrix3d apply(const Eigen::Matrix3d& a, const Eigen::Matrix3d& quadraticFactor) const
-  {
-    Eigen::Matrix3d m = quadratic * quadraticFactor + linear * a;
-    m.diagonal().array() += constant;
-    return m;
-  }
-};
-
+/// f(A) and f[A, x] t for the 4x4 block matrix [A t; 0 x] (x = 1 for log, 0 for exp): its
+/// f is [f(A), g(A) t; 0, f(x)] with g(z) = f[z, x].
 struct BlockFunction
 {
-  RealNewtonForm linearBlock;      ///< f(A)
-  RealNewtonForm translationBlock; ///< f[A, extra node], applied to the translation
-  Eigen::Matrix3d quadraticFactor; ///< (A - z0)(A - z1), real
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d translation;
+  Status status = Status::Ok;
 };
 
-/// The Newton forms of f(A) and of x -> f[x, extraNode] at A, from one table.
-BlockFunction blockFunction(
-  ScalarFunction f, const Eigen::Matrix3d& a, const GeneralEigenvalues& eig, double extraNode)
+/// f(B) for a 2x2 block B with eigenvalues mu0, mu1 from divided differences c0 = f[mu0],
+/// c1 = f[mu0, mu1]: f(B) = c0 I + c1 (B - mu0 I), real for a real B (imaginary parts cancel).
+Eigen::Matrix2d newtonForm2(const Eigen::Matrix2d& b, Complex c0, Complex c1, Complex mu0)
 {
-  Complex nodes[4];
-  if (eig.complexPair)
+  Eigen::Matrix2d out = c1.real() * b;
+  out.diagonal().array() += (c0 - c1 * mu0).real();
+  return out;
+}
+
+/// The eigenvalues of a 2x2 block (a conjugate pair, or two real ones).
+void blockEigenvalues(const Eigen::Matrix2d& b, Complex& mu0, Complex& mu1)
+{
+  const double half = 0.5 * (b(0, 0) + b(1, 1));
+  const double d = 0.5 * (b(0, 0) - b(1, 1));
+  const double discriminant = d * d + b(0, 1) * b(1, 0);
+  if (discriminant < 0.0)
   {
-    nodes[0] = eig.values[0];
-    nodes[1] = eig.values[1];
-    nodes[2] = eig.values[2];
+    mu0 = Complex(half, std::sqrt(-discriminant));
+    mu1 = std::conj(mu0);
   }
   else
   {
-    // Middle eigenvalue first, as for symmetric matrices (Kaji & Ochiai App. B).
-    nodes[0] = eig.values[1];
-    nodes[1] = eig.values[0];
-    nodes[2] = eig.values[2];
+    const double r = std::sqrt(discriminant);
+    mu0 = half + r;
+    mu1 = half - r;
+  }
+}
+
+/// f of [A t; 0 x] through the real Schur form A = Q T Q^T (Eigen's RealSchur): on a
+/// quasi-triangular T every entry of f(T) is a sum of products of T's entries with divided
+/// differences of f at T's eigenvalues (Higham, "Functions of Matrices", Thm 4.11; for a 2x2
+/// block B above a 1x1 block y, f(T)_(B,y) = f[., y](B) T_(B,y), the solution of the Sylvester
+/// equation). The divided differences are accurate for close and coincident nodes
+/// (lct/DividedDifferences.h), and nothing is formed in the original basis, so spread spectra
+/// (1e-6, 1, 1e6) keep all their digits, which the quadratic polynomial in A does not.
+BlockFunction blockFunction(
+  ScalarFunction f, const Eigen::Matrix3d& a, const Eigen::Vector3d& t, double extraNode)
+{
+  BlockFunction out;
+  const Eigen::RealSchur<Eigen::Matrix3d> schur(a);
+  if (schur.info() != Eigen::Success)
+  {
+    out.status = Status::NumericalFailure;
+    return out;
+  }
+  const Eigen::Matrix3d& tm = schur.matrixT();
+  const Eigen::Matrix3d& q = schur.matrixU();
+  // Block structure: a 2x2 block at the top (rows 0-1), at the bottom (rows 1-2), or none.
+  const bool blockTop = tm(1, 0) != 0.0;
+  const bool blockBottom = !blockTop && tm(2, 1) != 0.0;
+  Complex nodes[4];
+  if (blockTop)
+  {
+    blockEigenvalues(tm.topLeftCorner<2, 2>(), nodes[0], nodes[1]);
+    nodes[2] = tm(2, 2);
+  }
+  else if (blockBottom)
+  {
+    nodes[0] = tm(0, 0);
+    blockEigenvalues(tm.bottomRightCorner<2, 2>(), nodes[1], nodes[2]);
+  }
+  else
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      nodes[i] = tm(i, i);
+    }
   }
   nodes[3] = extraNode;
+  if (f != ScalarFunction::Exp)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      if (nodes[i].imag() == 0.0 && nodes[i].real() <= 0.0)
+      {
+        out.status = Status::NoRealLogarithm;
+        return out;
+      }
+    }
+  }
   const auto dd = dividedDifferences(f, nodes, 4);
-  const double sum = (nodes[0] + nodes[1]).real();
-  const double product = (nodes[0] * nodes[1]).real();
-
-  BlockFunction out;
-  out.quadraticFactor = a * a - sum * a;
-  out.quadraticFactor.diagonal().array() += product;
-  out.linearBlock = { (dd[0b0001] - dd[0b0011] * nodes[0]).real(), dd[0b0011].real(),
-    dd[0b0111].real() };
-  out.translationBlock = { (dd[0b1001] - dd[0b1011] * nodes[0]).real(), dd[0b1011].real(),
-    dd[0b1111].real() };
+  // F = f(T) and G = g(T), g(z) = f[z, x]: g's divided differences are f's with x appended
+  // (mask bit 3).
+  Eigen::Matrix3d fT = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d gT = Eigen::Matrix3d::Zero();
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    const unsigned x = pass == 0 ? 0u : 8u;
+    Eigen::Matrix3d& m = pass == 0 ? fT : gT;
+    if (blockTop)
+    {
+      const Eigen::Matrix2d b = tm.topLeftCorner<2, 2>();
+      m.topLeftCorner<2, 2>() = newtonForm2(b, dd[1 | x], dd[3 | x], nodes[0]);
+      m(2, 2) = dd[4 | x].real();
+      // f[., y](B) T_(B,y) with y = T22.
+      m.topRightCorner<2, 1>() =
+        newtonForm2(b, dd[5 | x], dd[7 | x], nodes[0]) * tm.topRightCorner<2, 1>();
+    }
+    else if (blockBottom)
+    {
+      const Eigen::Matrix2d b = tm.bottomRightCorner<2, 2>();
+      m(0, 0) = dd[1 | x].real();
+      m.bottomRightCorner<2, 2>() = newtonForm2(b, dd[2 | x], dd[6 | x], nodes[1]);
+      // T_(y,B) f[y, .](B) with y = T00.
+      m.block<1, 2>(0, 1) = tm.block<1, 2>(0, 1) * newtonForm2(b, dd[3 | x], dd[7 | x], nodes[1]);
+    }
+    else
+    {
+      m(0, 0) = dd[1 | x].real();
+      m(1, 1) = dd[2 | x].real();
+      m(2, 2) = dd[4 | x].real();
+      m(0, 1) = tm(0, 1) * dd[3 | x].real();
+      m(1, 2) = tm(1, 2) * dd[6 | x].real();
+      // Paths 0 -> 2 and 0 -> 1 -> 2; (T01 T12) f[...] is grouped to keep within range.
+      m(0, 2) = tm(0, 2) * dd[5 | x].real() + tm(0, 1) * (tm(1, 2) * dd[7 | x].real());
+    }
+  }
+  out.linear = q * fT * q.transpose();
+  out.translation = q * (gT * (q.transpose() * t));
+  if (!out.linear.allFinite() || !out.translation.allFinite())
+  {
+    out.status = Status::OutOfRange;
+  }
   return out;
 }
 
@@ -99,6 +183,51 @@ LogCoords packLog(const Eigen::Matrix3d& logLinear, const Eigen::Vector3d& u)
   return c;
 }
 
+/// Eigenvalue magnitudes (geometric mean |det A|^(1/3)) up to 2^+-kLogMagnitudeLimit: the
+/// divided differences of log at such nodes (up to |lambda|^-2) and their products with Schur
+/// entries stay in the double range.
+constexpr double kMagnitudeLimitExponent = 450.0;
+/// Above 2^64 the translation block is solved for instead (see matrixLog).
+constexpr double kLargeMagnitudeExponent = 64.0;
+constexpr double kLn2 = 0.69314718055994530942;
+
+/// log det A without underflow or overflow: the determinant of A 2^-e plus 3 e log 2.
+double logDeterminant(const Eigen::Matrix3d& a)
+{
+  const int e = unitScaleExponent(a);
+  return std::log(unitScaleDeterminant(scaledByPowerOfTwo(a, -e))) + 3.0 * e * kLn2;
+}
+
+/// The magnitudes this parametrisation handles (see kMagnitudeLimitExponent) and a condition
+/// number up to kMaxConditionNumber. `logDet` is log det A.
+Status checkRange(const Eigen::Matrix3d& a, double logDet)
+{
+  if (!std::isfinite(logDet) || std::abs(logDet) > 3.0 * kMagnitudeLimitExponent * kLn2)
+  {
+    return Status::MagnitudeOutOfRange;
+  }
+  const int e = unitScaleExponent(a);
+  // ||A||_F^3 / det A >= cond(A); only then is the condition number computed.
+  const double logBound = 3.0 * (std::log(scaledByPowerOfTwo(a, -e).norm()) + e * kLn2) - logDet;
+  if (!std::isfinite(logBound))
+  {
+    return Status::OutOfRange;
+  }
+  if (logBound > std::log(kMaxConditionNumber))
+  {
+    const SingularValueDecomposition3 svd = singularValueDecomposition3(scaledByPowerOfTwo(a, -e));
+    if (!(svd.sigma[2] > 0.0))
+    {
+      return Status::Singular;
+    }
+    if (svd.sigma[0] > kMaxConditionNumber * svd.sigma[2])
+    {
+      return Status::IllConditioned;
+    }
+  }
+  return Status::Ok;
+}
+
 } // namespace
 
 Eigen::Matrix3d logLinearPart(const LogCoords& c)
@@ -114,15 +243,20 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
     return R::failure(Status::NonFinite);
   }
   const Eigen::Matrix3d l = logLinearPart(c);
-  const auto block = blockFunction(ScalarFunction::Exp, l, generalEigenvalues(l), 0.0);
-  R out{ makeAffine(block.linearBlock.apply(l, block.quadraticFactor),
-           block.translationBlock.apply(l, block.quadraticFactor) * translationPart(c)),
-    Status::Ok };
-  if (!out.value.allFinite())
+  const BlockFunction block = blockFunction(ScalarFunction::Exp, l, translationPart(c), 0.0);
+  if (block.status != Status::Ok)
   {
-    return R::failure(Status::NonFinite);
+    return R::failure(block.status);
   }
-  return out;
+  // det exp(L) = e^tr(L): a result below the normal range, or one too ill-conditioned to hold
+  // its smallest stretch, is refused like the same matrix given to matrixLog.
+  Status range = checkRange(block.linear, l.trace());
+  range = range == Status::MagnitudeOutOfRange ? Status::OutOfRange : range;
+  if (range != Status::Ok)
+  {
+    return R::failure(range);
+  }
+  return { makeAffine(block.linear, block.translation), Status::Ok };
 }
 
 Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s)
@@ -184,27 +318,35 @@ Result<LogCoords> matrixLog(const Eigen::Matrix4d& m)
     return R::failure(valid);
   }
   const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
-  const GeneralEigenvalues eig = generalEigenvalues(a);
-  for (const Complex& value : eig.values)
+  const double logDet = logDeterminant(a);
+  const Status range = checkRange(a, logDet);
+  if (range != Status::Ok)
   {
-    if (value.imag() == 0.0 && value.real() <= 0.0)
+    return R::failure(range);
+  }
+  BlockFunction block = blockFunction(ScalarFunction::Log, a, m.topRightCorner<3, 1>(), 1.0);
+  if (block.status != Status::Ok)
+  {
+    return R::failure(block.status);
+  }
+  // For large eigenvalues the divided differences with the node 1 fall like |lambda|^-3 and
+  // underflow; there A - I is as well conditioned as A, so u = (A - I)^-1 log(A) t directly.
+  if (logDet > 3.0 * kLargeMagnitudeExponent * kLn2)
+  {
+    Eigen::Matrix3d shifted = a;
+    shifted.diagonal().array() -= 1.0;
+    block.translation =
+      shifted.partialPivLu().solve(Eigen::Vector3d(block.linear * m.topRightCorner<3, 1>()));
+    if (!block.translation.allFinite())
     {
-      return R::failure(Status::NoRealLogarithm);
+      return R::failure(Status::OutOfRange);
     }
   }
-  const auto block = blockFunction(ScalarFunction::Log, a, eig, 1.0);
-  const Eigen::Matrix3d logA = block.linearBlock.apply(a, block.quadraticFactor);
-  const Eigen::Vector3d u =
-    block.translationBlock.apply(a, block.quadraticFactor) * m.topRightCorner<3, 1>();
-  R out{ packLog(logA, u), Status::Ok };
-  if (!out.value.allFinite())
-  {
-    return R::failure(Status::NoRealLogarithm);
-  }
+  R out{ packLog(block.linear, block.translation), Status::Ok };
   // A conjugate pair close to the negative real axis (turns beyond 135 degrees): there the
-  // log is ill-conditioned (its divided differences grow like 1 / Im) and the cubic's roots
-  // carry the round-off of the characteristic polynomial, so the closed form may lose digits.
-  // Check the result and refuse it rather than return an inaccurate logarithm.
+  // log is ill-conditioned (its divided differences grow like 1 / Im), so the result may have
+  // lost digits. Check it and refuse it rather than return an inaccurate logarithm.
+  const GeneralEigenvalues eig = generalEigenvalues(a);
   if (eig.complexPair && eig.values[0].real() < 0.0 &&
     eig.values[0].imag() < kCheckedPairSlope * -eig.values[0].real())
   {

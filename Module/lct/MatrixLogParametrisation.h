@@ -5,13 +5,17 @@
  * log [A t; 0 1] = [log A, g(A) t; 0 0]  with g(x) = log(x)/(x - 1) = log[x, 1]
  * exp [L u; 0 0] = [exp L, h(L) u; 0 1]  with h(x) = (e^x - 1)/x  = exp[x, 0]
  *
- * Both 3x3 functions are quadratic polynomials in the matrix whose coefficients are divided
- * differences at the eigenvalues (cubic formula) and at the extra node 1 (log) or 0 (exp),
- * so one table of divided differences gives the linear and the translation block at once.
- * No iteration. Alexa App. A: a real logarithm exists only without negative real
- * eigenvalues; such input fails with NoRealLogarithm. Near the negative real axis the log is
- * ill-conditioned and the characteristic polynomial has a near-double root, so there the
- * result is checked a posteriori (exp(log M) against M) and refused if inaccurate.
+ * Both are evaluated on the real Schur form A = Q T Q^T (Eigen's RealSchur): every entry of
+ * f(T) is a sum of products of T's entries with divided differences of f at the eigenvalues
+ * (and at the extra node 1 for log, 0 for exp, which gives the translation block), accurate for
+ * close and coincident eigenvalues (lct/DividedDifferences.h). Nothing is formed as a polynomial
+ * in A itself, which would cancel for spread spectra (diag(1e-6, 1, 1e6) lost 4 digits that way).
+ * Alexa App. A: a real logarithm exists only without negative real eigenvalues; such input fails
+ * with NoRealLogarithm. Near the negative real axis the log is ill-conditioned, so there the
+ * result is checked a posteriori (exp(log M) against M) and refused if inaccurate. Domain:
+ * condition number up to kMaxConditionNumber (IllConditioned beyond) and eigenvalue magnitudes
+ * within 1e-135 .. 1e135 (MagnitudeOutOfRange beyond; the Polar parametrisation has no such
+ * limit).
  */
 #ifndef lct_MatrixLogParametrisation_h
 #define lct_MatrixLogParametrisation_h
@@ -27,10 +31,12 @@ namespace lct
 {
 
 /// The principal log of M in LogCoords layout. Fails with NonFinite, NotAffine,
-/// NonPositiveDeterminant or NoRealLogarithm.
+/// NegativeDeterminant, Singular, IllConditioned, MagnitudeOutOfRange or NoRealLogarithm.
 VTKLCT_EXPORT Result<LogCoords> matrixLog(const Eigen::Matrix4d& m);
 
-/// exp of the 4x4 log matrix held by c. Fails with NonFinite.
+/// exp of the 4x4 log matrix held by c. Fails with NonFinite (c), OutOfRange (the result
+/// overflows or underflows) or IllConditioned (the result's condition number exceeds
+/// kMaxConditionNumber).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> matrixExp(const LogCoords& c);
 
 /// The principal power M^s = exp(s log M) (Alexa's s (.) M). Near the identity

@@ -21,7 +21,8 @@ namespace lct
 VTKLCT_EXPORT Result<LogCoords> logarithm(
   const Eigen::Matrix4d& m, Parametrisation p, const LogCoords* reference = nullptr);
 
-/// The affine matrix of log coordinates. Fails only with NonFinite.
+/// The affine matrix of log coordinates. Fails with NonFinite, OutOfRange or IllConditioned
+/// (see polarExp / matrixExp).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> exponential(const LogCoords& c, Parametrisation p);
 
 /// "Polar" or "MatrixLog".

@@ -1,5 +1,10 @@
 #include "lct/PolarDecomposition.h"
 
+#include "lct/AccurateMinors.h"
+#include "lct/Conditioning.h"
+#include "lct/Eigenvalues3.h"
+#include "lct/SVD3.h"
+
 #include <Eigen/LU>
 
 #include <cmath>
@@ -8,26 +13,38 @@
 namespace lct
 {
 
-Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a)
+Eigen::Matrix3d PolarFactors::stretch() const
 {
-  using R = Result<PolarFactors>;
+  return scaledByPowerOfTwo(this->unitStretch, this->exponent);
+}
+
+int determinantSign(const Eigen::Matrix3d& a)
+{
   if (!a.allFinite())
   {
-    return R::failure(Status::NonFinite);
+    return 0;
   }
-  const double det = a.determinant();
-  if (!(det > 0.0))
+  // Entries of moderate size whose plain determinant is far from 0 relative to their cube: the
+  // sign is certain without scaling or exact minors (the common case).
+  const double largest = a.cwiseAbs().maxCoeff();
+  if (largest > 0x1p-300 && largest < 0x1p300)
   {
-    return R::failure(Status::NonPositiveDeterminant);
+    const double det = a.determinant();
+    if (std::abs(det) > 1e-6 * largest * largest * largest)
+    {
+      return det > 0.0 ? 1 : -1;
+    }
   }
-  // det below eps^3 * ||A||^3 (relative) carries no digits: numerically singular.
-  const double norm = a.norm();
-  const double eps = std::numeric_limits<double>::epsilon();
-  if (det <= eps * eps * eps * norm * norm * norm)
-  {
-    return R::failure(Status::Singular);
-  }
+  const double det = unitScaleDeterminant(scaledByPowerOfTwo(a, -unitScaleExponent(a)));
+  return det > 0.0 ? 1 : (det < 0.0 ? -1 : 0);
+}
 
+namespace
+{
+
+/// Newton's scaled iteration on a unit-size, well-enough conditioned matrix.
+Eigen::Matrix3d newtonPolarFactor(const Eigen::Matrix3d& a)
+{
   constexpr int kMaxIterations = 30;
   Eigen::Matrix3d x = a;
   bool scaling = true;
@@ -51,20 +68,93 @@ Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a)
     // round-off, so take it and stop.
     if (change <= 1e-18)
     {
-      const Eigen::Matrix3d last = 0.5 * (x + x.inverse().transpose());
-      x = last;
+      x = 0.5 * (x + x.inverse().transpose());
       break;
     }
   }
-  PolarFactors factors;
-  factors.rotation = x;
-  const Eigen::Matrix3d s = x.transpose() * a;
-  factors.stretch = 0.5 * (s + s.transpose());
-  if (!factors.rotation.allFinite() || !factors.stretch.allFinite())
+  return x;
+}
+
+} // namespace
+
+namespace
+{
+/// log(DBL_MIN): a stretch below it is subnormal, with fewer than 53 bits.
+const double kLogSmallestNormal = std::log(std::numeric_limits<double>::min());
+
+/// Ok, or OutOfRange when the smallest stretch 2^e sigma_min is subnormal.
+Status checkSmallestStretch(double unitSmallest, int exponent)
+{
+  return std::log(unitSmallest) + exponent * 0.69314718055994530942 < kLogSmallestNormal
+    ? Status::OutOfRange
+    : Status::Ok;
+}
+} // namespace
+
+Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a)
+{
+  using R = Result<PolarFactors>;
+  if (!a.allFinite())
   {
     return R::failure(Status::NonFinite);
   }
-  return { factors, Status::Ok };
+  const int sign = determinantSign(a);
+  if (sign < 0)
+  {
+    return R::failure(Status::NegativeDeterminant);
+  }
+  if (sign == 0)
+  {
+    return R::failure(Status::Singular);
+  }
+  PolarFactors f;
+  f.exponent = unitScaleExponent(a);
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(a, -f.exponent);
+
+  // k = ||A||_F^3 / det A lies in [cond, 3^(3/2) cond^2]: above 3^(3/2) 32^2 the closed-form
+  // branch cannot apply, so Newton's iteration is not even started.
+  const double det = unitScaleDeterminant(unit);
+  const double norm = unit.norm();
+  constexpr double kRootTwentySeven = 5.196152422706632;
+  const bool clearlyIllConditioned = !(det > 0.0) ||
+    norm * norm * norm >
+      kRootTwentySeven * kClosedFormConditionLimit * kClosedFormConditionLimit * det;
+
+  if (!clearlyIllConditioned)
+  {
+    f.rotation = newtonPolarFactor(unit);
+    const Eigen::Matrix3d s = f.rotation.transpose() * unit;
+    f.unitStretch = 0.5 * (s + s.transpose());
+    f.unitEigenvalues = symmetricEigenvalues(f.unitStretch);
+    if (f.rotation.allFinite() && f.unitEigenvalues.allFinite() &&
+      f.unitEigenvalues[2] * kClosedFormConditionLimit >= f.unitEigenvalues[0])
+    {
+      const Status range = checkSmallestStretch(f.unitEigenvalues[2], f.exponent);
+      return range == Status::Ok ? R{ f, Status::Ok } : R::failure(range);
+    }
+  }
+
+  const SingularValueDecomposition3 svd = singularValueDecomposition3(unit);
+  if (!svd.sigma.allFinite() || !(svd.sigma[2] > 0.0))
+  {
+    return R::failure(Status::Singular);
+  }
+  if (svd.sigma[0] > kMaxConditionNumber * svd.sigma[2])
+  {
+    return R::failure(Status::IllConditioned);
+  }
+  const Status range = checkSmallestStretch(svd.sigma[2], f.exponent);
+  if (range != Status::Ok)
+  {
+    return R::failure(range);
+  }
+  f.rotation = svd.u * svd.v.transpose();
+  f.unitEigenvalues = svd.sigma;
+  f.stretchAxes = svd.v;
+  f.hasStretchAxes = true;
+  const Eigen::Matrix3d s = svd.v * svd.sigma.asDiagonal() * svd.v.transpose();
+  f.unitStretch = 0.5 * (s + s.transpose());
+  return { f, Status::Ok };
 }
 
 } // namespace lct

@@ -1,14 +1,24 @@
 #include "lct/PolarParametrisation.h"
 
 #include "lct/Affine.h"
+#include "lct/Conditioning.h"
 #include "lct/PolarDecomposition.h"
 #include "lct/SO3.h"
 #include "lct/Sym3.h"
 
+#include <cmath>
 #include <limits>
 
 namespace lct
 {
+
+namespace
+{
+constexpr double kLn2 = 0.69314718055994530942;
+/// log(DBL_MIN): stretches below it are subnormal or zero.
+const double kLowestLogStretch = std::log(std::numeric_limits<double>::min());
+const double kLogMaxConditionNumber = std::log(kMaxConditionNumber);
+} // namespace
 
 Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rotationReference)
 {
@@ -23,24 +33,39 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   {
     return R::failure(polar.status);
   }
+  const PolarFactors& f = polar.value;
   R out;
   // A rigid map's stretch is I up to round-off: its log is 0 exactly, so that blends of rigid
   // maps are exactly rigid and take the rotation-only path of polarExp.
-  Eigen::Matrix3d stretchOffset = polar.value.stretch;
+  Eigen::Matrix3d stretchOffset = f.stretch();
   stretchOffset.diagonal().array() -= 1.0;
   const bool rigid =
     stretchOffset.cwiseAbs().maxCoeff() <= 8.0 * std::numeric_limits<double>::epsilon();
-  const auto logStretch = rigid ? Result<Eigen::Matrix3d>{ Eigen::Matrix3d::Zero(), Status::Ok }
-                                : logSPD(polar.value.stretch);
-  if (!logStretch)
+  Eigen::Matrix3d logStretch = Eigen::Matrix3d::Zero();
+  if (!rigid)
   {
-    return R::failure(logStretch.status);
+    if (f.hasStretchAxes)
+    {
+      // log S = V diag(log sigma) V^T, every sigma relatively accurate (lct/SVD3.h).
+      const Eigen::Vector3d logSigma = f.unitEigenvalues.array().log();
+      logStretch = f.stretchAxes * logSigma.asDiagonal() * f.stretchAxes.transpose();
+      logStretch = 0.5 * (logStretch + logStretch.transpose());
+    }
+    else
+    {
+      logStretch = logSPDClosedForm(f.unitStretch, f.unitEigenvalues);
+    }
+    // log(2^e S_unit) = log S_unit + e log 2 I.
+    logStretch.diagonal().array() += f.exponent * kLn2;
   }
   translationPart(out.value) = m.topRightCorner<3, 1>();
-  rotationPart(out.value) = rotationReference
-    ? logSO3Nearest(polar.value.rotation, *rotationReference)
-    : logSO3(polar.value.rotation);
-  symmetricPart(out.value) = toSymmetricVector(logStretch.value);
+  rotationPart(out.value) =
+    rotationReference ? logSO3Nearest(f.rotation, *rotationReference) : logSO3(f.rotation);
+  symmetricPart(out.value) = toSymmetricVector(logStretch);
+  if (!out.value.allFinite())
+  {
+    return R::failure(Status::OutOfRange);
+  }
   return out;
 }
 
@@ -51,14 +76,33 @@ Result<Eigen::Matrix4d> polarExp(const LogCoords& c)
   {
     return R::failure(Status::NonFinite);
   }
+  const Eigen::Matrix3d rotation = expSO3(rotationPart(c));
+  Eigen::Matrix3d linear;
   // Rigid maps (Y = 0, the common case of cameras and skeletons) skip the stretch entirely.
-  const Eigen::Matrix3d linear = symmetricPart(c).isZero(0.0)
-    ? expSO3(rotationPart(c))
-    : Eigen::Matrix3d(expSO3(rotationPart(c)) * expSym(fromSymmetricVector(symmetricPart(c))));
+  if (symmetricPart(c).isZero(0.0))
+  {
+    linear = rotation;
+  }
+  else
+  {
+    Eigen::Vector2d bounds;
+    const Eigen::Matrix3d stretch = expSym(fromSymmetricVector(symmetricPart(c)), &bounds);
+    // A stretch below the normal range has lost its digits (or is 0): the map is no longer
+    // representable, rather than singular.
+    if (!(bounds[0] > kLowestLogStretch) || !stretch.allFinite())
+    {
+      return R::failure(Status::OutOfRange);
+    }
+    if (bounds[1] - bounds[0] > kLogMaxConditionNumber)
+    {
+      return R::failure(Status::IllConditioned);
+    }
+    linear = rotation * stretch;
+  }
   R out{ makeAffine(linear, translationPart(c)), Status::Ok };
   if (!out.value.allFinite())
   {
-    return R::failure(Status::NonFinite);
+    return R::failure(Status::OutOfRange);
   }
   return out;
 }

@@ -23,11 +23,14 @@
 namespace lct
 {
 
-/// psi(M). Fails with NonFinite, NotAffine, NonPositiveDeterminant or Singular.
+/// psi(M). Fails with NonFinite, NotAffine, NegativeDeterminant, Singular, IllConditioned
+/// (lct/Conditioning.h) or OutOfRange (a subnormal stretch).
 VTKLCT_EXPORT Result<LogCoords> polarLog(
   const Eigen::Matrix4d& m, const Eigen::Vector3d* rotationReference = nullptr);
 
-/// phi(c). Fails with NonFinite when c is not finite or the result overflows.
+/// phi(c). Fails with NonFinite (c not finite), OutOfRange (the result overflows, or a stretch
+/// underflows below the normal range) or IllConditioned (stretch condition number above
+/// kMaxConditionNumber: the result could not hold its smallest stretch).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> polarExp(const LogCoords& c);
 
 } // namespace lct

@@ -17,12 +17,16 @@ namespace lct
 enum class Status
 {
   Ok = 0,
-  NonFinite,              ///< an input (or a result) holds NaN or Inf
-  NotAffine,              ///< the bottom row of a 4x4 matrix is not (0, 0, 0, 1)
-  NonPositiveDeterminant, ///< det <= 0: a reflection or a singular map, outside Aff+(3)
-  Singular,               ///< numerically singular: a stretch eigenvalue is below round-off
-  NoRealLogarithm,        ///< a negative real eigenvalue (or too close to one for an accurate log)
-  InvalidArgument         ///< sizes, counts or indices that make no sense
+  NonFinite,           ///< an input (or a result) holds NaN or Inf
+  NotAffine,           ///< the bottom row of a 4x4 matrix is not (0, 0, 0, 1)
+  NegativeDeterminant, ///< det < 0: a reflection, outside Aff+(3) (det = 0 is Singular)
+  Singular,            ///< singular: a zero stretch (det = 0, or sigma_min = 0 in double)
+  IllConditioned,      ///< sigma_max / sigma_min above kMaxConditionNumber (lct/Conditioning.h)
+  NoRealLogarithm,     ///< a negative real eigenvalue (or too close to one for an accurate log)
+  OutOfRange,          ///< the result overflows (or underflows to a singular map) in double
+  MagnitudeOutOfRange, ///< MatrixLog only: eigenvalue magnitudes beyond 2^+-450
+  NumericalFailure,    ///< an eigensolver did not converge (a defect: please report the input)
+  InvalidArgument      ///< sizes, counts or indices that make no sense
 };
 
 /// A one-line English description of `status`, suitable for an error message.

@@ -1,7 +1,10 @@
 #include "lct/Sym3.h"
 
+#include "lct/Conditioning.h"
 #include "lct/DividedDifferences.h"
 #include "lct/Eigenvalues3.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <array>
 #include <cmath>
@@ -37,6 +40,10 @@ Eigen::Matrix3d applySymmetric(ScalarFunction f, const Eigen::Matrix3d& y, const
 /// multiply-adds in a chain instead of the closed form's acos, sincos and three exps (measured
 /// inside InterpolateTransform: about 50 ns instead of 170 ns).
 constexpr double kSeriesRadius = 1.0;
+constexpr double kLn2 = 0.69314718055994530942;
+/// log(kClosedFormConditionLimit): the eigenvalue spread of Y above which exp(Y) is formed from
+/// eigenvectors.
+const double kClosedFormLogSpread = std::log(kClosedFormConditionLimit);
 constexpr int kSeriesTerms = 18;
 /// 1/n!, n = 0 .. kSeriesTerms - 1.
 constexpr std::array<double, kSeriesTerms> kInverseFactorial = [] {
@@ -49,24 +56,93 @@ constexpr std::array<double, kSeriesTerms> kInverseFactorial = [] {
   return f;
 }();
 
+/// Y = vectors diag(values) vectors^T from a backward-stable eigensolver (values descending).
+struct SymmetricEigen
+{
+  Eigen::Vector3d values;
+  Eigen::Matrix3d vectors;
+};
+
+SymmetricEigen eigenDecompose(const Eigen::Matrix3d& y)
+{
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+    Eigen::Matrix3d(y.selfadjointView<Eigen::Upper>()));
+  // Eigen sorts ascending.
+  return { solver.eigenvalues().reverse(), solver.eigenvectors().rowwise().reverse() };
+}
+
+double applyScalar(ScalarFunction f, double x)
+{
+  switch (f)
+  {
+    case ScalarFunction::Exp:
+      return std::exp(x);
+    case ScalarFunction::Log:
+      return std::log(x);
+    case ScalarFunction::Sqrt:
+      return std::sqrt(x);
+  }
+  return x;
+}
+
+/// f(Y) = V diag(f(l)) V^T: for spread spectra, where the Newton form about the middle
+/// eigenvalue cancels (it builds the small eigenvalues' part from terms the size of the largest).
+Eigen::Matrix3d applyEigen(ScalarFunction f, const SymmetricEigen& e)
+{
+  const Eigen::Vector3d fl = e.values.unaryExpr([f](double x) { return applyScalar(f, x); });
+  const Eigen::Matrix3d result = e.vectors * fl.asDiagonal() * e.vectors.transpose();
+  return 0.5 * (result + result.transpose());
+}
+
 Result<Eigen::Matrix3d> applyPositive(ScalarFunction f, const Eigen::Matrix3d& s)
 {
-  const Eigen::Vector3d l = symmetricEigenvalues(s);
-  if (!l.allFinite())
+  using R = Result<Eigen::Matrix3d>;
+  if (!s.allFinite())
   {
-    return Result<Eigen::Matrix3d>::failure(Status::NonFinite);
+    return R::failure(Status::NonFinite);
   }
-  // The smallest eigenvalue is known to about eps * largest: below that it has no digits.
-  if (l[2] <= 8.0 * std::numeric_limits<double>::epsilon() * l[0])
+  // Exact power-of-two scaling: log(2^e S) = log(S) + e log 2 I, sqrt(2^e S) = 2^(e/2) sqrt(S)
+  // (e even).
+  int e = unitScaleExponent(s);
+  e += e & 1;
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(s, -e);
+  const Eigen::Vector3d l = symmetricEigenvalues(unit);
+  Eigen::Matrix3d result;
+  if (l[2] > 0.0 && l[2] * kClosedFormConditionLimit >= l[0])
   {
-    return Result<Eigen::Matrix3d>::failure(Status::Singular);
+    result = applySymmetric(f, unit, l);
   }
-  return { applySymmetric(f, s, l), Status::Ok };
+  else
+  {
+    const SymmetricEigen eigen = eigenDecompose(unit);
+    if (!(eigen.values[2] > 0.0))
+    {
+      return R::failure(Status::Singular);
+    }
+    if (eigen.values[0] > kMaxConditionNumber * eigen.values[2])
+    {
+      return R::failure(Status::IllConditioned);
+    }
+    result = applyEigen(f, eigen);
+  }
+  if (f == ScalarFunction::Log)
+  {
+    result.diagonal().array() += e * kLn2;
+  }
+  else
+  {
+    result = scaledByPowerOfTwo(result, e / 2);
+  }
+  if (!result.allFinite())
+  {
+    return R::failure(Status::OutOfRange);
+  }
+  return { result, Status::Ok };
 }
 
 } // namespace
 
-Eigen::Matrix3d expSym(const Eigen::Matrix3d& y)
+Eigen::Matrix3d expSym(const Eigen::Matrix3d& y, Eigen::Vector2d* eigenvalueBounds)
 {
   const double mean = y.trace() / 3.0;
   // Z = Y - mean I, symmetric and traceless; six numbers.
@@ -76,7 +152,27 @@ Eigen::Matrix3d expSym(const Eigen::Matrix3d& y)
     z00 * z00 + z11 * z11 + z22 * z22 + 2.0 * (z01 * z01 + z12 * z12 + z02 * z02);
   if (!(normSq <= kSeriesRadius * kSeriesRadius))
   {
-    return applySymmetric(ScalarFunction::Exp, y, symmetricEigenvalues(y));
+    const Eigen::Vector3d l = symmetricEigenvalues(y);
+    if (l[0] - l[2] <= kClosedFormLogSpread)
+    {
+      if (eigenvalueBounds)
+      {
+        *eigenvalueBounds = Eigen::Vector2d(l[2], l[0]);
+      }
+      return applySymmetric(ScalarFunction::Exp, y, l);
+    }
+    const SymmetricEigen eigen = eigenDecompose(y);
+    if (eigenvalueBounds)
+    {
+      *eigenvalueBounds = Eigen::Vector2d(eigen.values[2], eigen.values[0]);
+    }
+    return applyEigen(ScalarFunction::Exp, eigen);
+  }
+  if (eigenvalueBounds)
+  {
+    // |l - mean| <= sqrt(2/3) ||Z||_F for a traceless symmetric Z.
+    const double radius = 0.816496580927726 * std::sqrt(normSq);
+    *eigenvalueBounds = Eigen::Vector2d(mean - radius, mean + radius);
   }
   // Cayley-Hamilton for traceless Z: Z^3 = p Z + q I with p = tr(Z^2)/2, q = det Z, so
   //   Z (alpha I + beta Z + gamma Z^2) = q gamma I + (alpha + p gamma) Z + beta Z^2,
@@ -117,6 +213,11 @@ Eigen::Matrix3d expSym(const Eigen::Matrix3d& y)
 Result<Eigen::Matrix3d> logSPD(const Eigen::Matrix3d& s)
 {
   return applyPositive(ScalarFunction::Log, s);
+}
+
+Eigen::Matrix3d logSPDClosedForm(const Eigen::Matrix3d& s, const Eigen::Vector3d& l)
+{
+  return applySymmetric(ScalarFunction::Log, s, l);
 }
 
 Result<Eigen::Matrix3d> sqrtSPD(const Eigen::Matrix3d& s)

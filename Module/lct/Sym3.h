@@ -16,6 +16,11 @@
  * logs of interpolation) skips the cubic: Cayley-Hamilton (Z^3 = p Z + q I) folds the
  * exponential series of Z onto three scalars, e^(tr Y / 3) (a I + b Z + c Z^2).
  *
+ * Spread spectra (condition number above kClosedFormConditionLimit, lct/Conditioning.h) are
+ * evaluated from the eigenvectors of a backward-stable solver instead (Eigen's
+ * SelfAdjointEigenSolver): the Newton form would build the smallest eigenvalue's part from terms
+ * the size of the largest. Input of any magnitude is scaled by a power of two (exact).
+ *
  * Accuracy: about eps * cond(Y) relative; see Testing/Unit/TestSym3.cxx for the measured
  * errors against Eigen's MatrixFunctions.
  */
@@ -31,15 +36,25 @@
 namespace lct
 {
 
-/// exp(Y) for symmetric Y (the upper triangle is read).
-VTKLCT_EXPORT Eigen::Matrix3d expSym(const Eigen::Matrix3d& y);
+/// exp(Y) for symmetric Y (the upper triangle is read). Entries overflow to Inf when an
+/// eigenvalue exceeds log(DBL_MAX); callers check. With `eigenvalueBounds`, receives a lower
+/// and an upper bound of Y's eigenvalues (the extreme eigenvalues themselves when Y is not
+/// near a multiple of I), so callers can tell an underflowing or ill-conditioned result.
+VTKLCT_EXPORT Eigen::Matrix3d expSym(
+  const Eigen::Matrix3d& y, Eigen::Vector2d* eigenvalueBounds = nullptr);
 
-/// The symmetric logarithm of an SPD matrix. Fails with `Singular` when an eigenvalue is
-/// not positive (to round-off).
+/// The symmetric logarithm of an SPD matrix, of any magnitude. Fails with NonFinite,
+/// Singular (an eigenvalue not positive), IllConditioned (lambda_max / lambda_min above
+/// kMaxConditionNumber) or OutOfRange.
 VTKLCT_EXPORT Result<Eigen::Matrix3d> logSPD(const Eigen::Matrix3d& s);
 
 /// The SPD square root of an SPD matrix; fails like `logSPD`.
 VTKLCT_EXPORT Result<Eigen::Matrix3d> sqrtSPD(const Eigen::Matrix3d& s);
+
+/// log S by the closed form about given eigenvalues (descending, as from symmetricEigenvalues):
+/// for callers that already have them and know S is well-conditioned (cond <=
+/// kClosedFormConditionLimit, eigenvalues positive).
+VTKLCT_EXPORT Eigen::Matrix3d logSPDClosedForm(const Eigen::Matrix3d& s, const Eigen::Vector3d& l);
 
 /// sym(3) as 6 numbers (xx, yy, zz, xy, yz, xz) and back.
 using SymmetricVector = Eigen::Matrix<double, 6, 1>;

@@ -62,15 +62,23 @@ TEST(BadInput, ReflectionsAndSingularMaps)
 {
   for (Parametrisation p : kBoth)
   {
-    EXPECT_EQ(lct::logarithm(diagonal(-1, 1, 1), p).status, Status::NonPositiveDeterminant);
-    EXPECT_EQ(lct::logarithm(diagonal(1, 0, 1), p).status, Status::NonPositiveDeterminant);
-    EXPECT_EQ(lct::logarithm(diagonal(0, 0, 0), p).status, Status::NonPositiveDeterminant);
+    EXPECT_EQ(lct::logarithm(diagonal(-1, 1, 1), p).status, Status::NegativeDeterminant);
+    EXPECT_EQ(lct::logarithm(diagonal(1, 0, 1), p).status, Status::Singular);
+    EXPECT_EQ(lct::logarithm(diagonal(0, 0, 0), p).status, Status::Singular);
+    // Positive, but a condition number of 1e300: refused, not computed with no digits left.
+    EXPECT_EQ(lct::logarithm(diagonal(1, 1e-300, 1), p).status, Status::IllConditioned);
+    EXPECT_EQ(lct::logarithm(diagonal(1, 1e-14, 1), p).status, Status::IllConditioned);
   }
-  // Positive but below round-off: numerically singular.
-  EXPECT_EQ(
-    lct::logarithm(diagonal(1, 1e-300, 1), Parametrisation::Polar).status, Status::Singular);
   EXPECT_EQ(lct::polarDecompose(Eigen::Vector3d(1, 1e-300, 1).asDiagonal().toDenseMatrix()).status,
-    Status::Singular);
+    Status::IllConditioned);
+  // A rank-one map with a positive-looking determinant of round-off: singular or refused.
+  Eigen::Matrix4d rankOne = Eigen::Matrix4d::Identity();
+  rankOne.topLeftCorner<3, 3>() = Eigen::Vector3d(1, 2, 3) * Eigen::RowVector3d(0.1, 0.7, 0.3);
+  for (Parametrisation p : kBoth)
+  {
+    const Status s = lct::logarithm(rankOne, p).status;
+    EXPECT_TRUE(s == Status::Singular || s == Status::IllConditioned) << lct::describe(s);
+  }
 }
 
 TEST(BadInput, NoRealLogarithmInMatrixLogButPolarWorks)
@@ -95,6 +103,27 @@ TEST(BadInput, OverflowingCoordinates)
   c[6] = 1000.0; // exp(1000) overflows
   for (Parametrisation p : kBoth)
   {
+    EXPECT_EQ(lct::exponential(c, p).status, Status::OutOfRange);
+  }
+  // A uniform stretch e^-1000 underflows: the map would be singular, not a transform.
+  c[6] = c[7] = c[8] = -1000.0;
+  for (Parametrisation p : kBoth)
+  {
+    EXPECT_EQ(lct::exponential(c, p).status, Status::OutOfRange);
+  }
+  // Representable but too ill-conditioned to hold its smallest stretch: e^(+-20).
+  c[6] = 20.0;
+  c[7] = 0.0;
+  c[8] = -20.0;
+  for (Parametrisation p : kBoth)
+  {
+    EXPECT_EQ(lct::exponential(c, p).status, Status::IllConditioned);
+  }
+  // Translations that overflow when combined are NonFinite input to exp, reported as such.
+  c.setZero();
+  c[0] = std::numeric_limits<double>::infinity();
+  for (Parametrisation p : kBoth)
+  {
     EXPECT_EQ(lct::exponential(c, p).status, Status::NonFinite);
   }
 }
@@ -106,17 +135,19 @@ TEST(BadInput, RelativeCombinationWithBadReference)
   EXPECT_EQ(
     lct::combineRelative(w, keys, 2, 5, Parametrisation::Polar).status, Status::InvalidArgument);
   EXPECT_EQ(lct::combineRelative(w, keys, 2, 1, Parametrisation::Polar).status,
-    Status::NonPositiveDeterminant);
-  EXPECT_EQ(
-    lct::combine(w, keys, 2, Parametrisation::Polar).status, Status::NonPositiveDeterminant);
+    Status::NegativeDeterminant);
+  EXPECT_EQ(lct::combine(w, keys, 2, Parametrisation::Polar).status, Status::NegativeDeterminant);
 }
 
 TEST(BadInput, EveryStatusHasADescription)
 {
-  for (Status s :
-    { Status::Ok, Status::NonFinite, Status::NotAffine, Status::NonPositiveDeterminant,
-      Status::Singular, Status::NoRealLogarithm, Status::InvalidArgument })
+  for (Status s : { Status::Ok, Status::NonFinite, Status::NotAffine, Status::NegativeDeterminant,
+         Status::Singular, Status::IllConditioned, Status::NoRealLogarithm, Status::OutOfRange,
+         Status::MagnitudeOutOfRange, Status::NumericalFailure, Status::InvalidArgument })
   {
-    EXPECT_GT(std::string(lct::describe(s)).size(), 1u);
+    const std::string text = lct::describe(s);
+    EXPECT_GT(text.size(), 1u);
+    // The core does not know which parametrisation the caller uses: no advice to switch.
+    EXPECT_EQ(text.find("use the"), std::string::npos) << text;
   }
 }

@@ -1,0 +1,321 @@
+// Ill-conditioned and extreme-magnitude input: accurate to what double precision allows, or an
+// explicit IllConditioned / OutOfRange, never a wrong matrix with status Ok (lct/Conditioning.h).
+//
+// The oracle for singular values is independent of the code under test: the exact cofactors
+// and determinant in __float128 (products of two doubles are exact in its 113-bit mantissa) and
+// Eigen's JacobiSVD in long double, so sigma_1, sigma_1 sigma_2 and det A of the *stored* matrix
+// are known to ~1e-18 whatever its condition number.
+#include "lct/AccurateMinors.h"
+#include "lct/Affine.h"
+#include "lct/Combination.h"
+#include "lct/Conditioning.h"
+#include "lct/MatrixLogParametrisation.h"
+#include "lct/Parametrisation.h"
+#include "lct/PolarDecomposition.h"
+#include "lct/SVD3.h"
+#include "lct/Sym3.h"
+
+#include "RandomTransforms.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using lct::Parametrisation;
+using lct::Status;
+
+namespace
+{
+using LongMatrix3 = Eigen::Matrix<long double, 3, 3>;
+const Parametrisation kBoth[] = { Parametrisation::Polar, Parametrisation::MatrixLog };
+
+/// Singular values of the stored matrix a (det > 0), each to ~1e-18 relative.
+Eigen::Matrix<long double, 3, 1> oracleSingularValues(const Eigen::Matrix3d& a)
+{
+  using Quad = __float128;
+  auto q = [&](int i, int j) { return static_cast<Quad>(a(i, j)); };
+  LongMatrix3 cofactors;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const int r0 = (i + 1) % 3, r1 = (i + 2) % 3, c0 = (j + 1) % 3, c1 = (j + 2) % 3;
+      // The cyclic minor carries the cofactor sign.
+      cofactors(i, j) = static_cast<long double>(q(r0, c0) * q(r1, c1) - q(r0, c1) * q(r1, c0));
+    }
+  }
+  Quad det = 0;
+  for (int j = 0; j < 3; ++j)
+  {
+    const Quad minor =
+      q(1, (j + 1) % 3) * q(2, (j + 2) % 3) - q(1, (j + 2) % 3) * q(2, (j + 1) % 3);
+    det += q(0, j) * minor;
+  }
+  const Eigen::JacobiSVD<LongMatrix3> svd(a.cast<long double>());
+  const Eigen::JacobiSVD<LongMatrix3> compound(cofactors);
+  const long double s1 = svd.singularValues()[0];
+  const long double s12 = compound.singularValues()[0];
+  return Eigen::Matrix<long double, 3, 1>(s1, s12 / s1, static_cast<long double>(det) / s12);
+}
+
+/// The stretch eigenvalues exp(eigenvalues of Y) of Polar log coordinates, descending.
+Eigen::Vector3d stretchOf(const lct::LogCoords& c)
+{
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+    lct::fromSymmetricVector(lct::symmetricPart(c)));
+  return solver.eigenvalues().reverse().array().exp();
+}
+
+Eigen::Matrix4d affine(const Eigen::Matrix3d& linear)
+{
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topLeftCorner<3, 3>() = linear;
+  return m;
+}
+} // namespace
+
+TEST(Conditioning, AccurateMinors)
+{
+  // Exactly representable cancellation: det = 1 from terms of 1e16.
+  Eigen::Matrix3d a;
+  a << 1e8, 1e8 + 1, 0, 1e8 - 1, 1e8, 0, 0, 0, 1;
+  EXPECT_EQ(lct::accurateDeterminant(a), 1.0);
+  EXPECT_EQ(lct::accurateDeterminant2(1e8, 1e8 + 1, 1e8 - 1, 1e8), 1.0);
+  EXPECT_EQ(lct::accurateCofactors(a)(2, 2), 1.0);
+  lct_test::RandomTransforms random(11);
+  for (int k = 0; k < 2000; ++k)
+  {
+    const Eigen::Matrix3d m = random.Linear(lct_test::TransformClass::GeneralAffine);
+    const long double exact = oracleSingularValues(m).prod();
+    EXPECT_NEAR(lct::accurateDeterminant(m) / exact, 1.0, 4e-16);
+  }
+}
+
+TEST(Conditioning, DiagonalStretchesAreExactInBothParametrisations)
+{
+  // The case: Scale(1e-6, 1, 1e6) came back as diag(3.2e-6, 1.0000256, 1e6), status Ok.
+  for (const Eigen::Vector3d& d : { Eigen::Vector3d(1e-6, 1, 1e6), Eigen::Vector3d(1e6, 1e-6, 1),
+         Eigen::Vector3d(3e-5, 2e-5, 4e7), Eigen::Vector3d(1e-12, 1, 1) })
+  {
+    const Eigen::Matrix4d m = affine(d.asDiagonal());
+    for (Parametrisation p : kBoth)
+    {
+      const auto log = lct::logarithm(m, p);
+      ASSERT_TRUE(log.ok()) << lct::name(p) << " " << d.transpose();
+      const auto back = lct::exponential(log.value, p);
+      ASSERT_TRUE(back.ok());
+      for (int i = 0; i < 3; ++i)
+      {
+        EXPECT_NEAR(back.value(i, i) / d[i], 1.0, 1e-14) << lct::name(p) << " " << d.transpose();
+      }
+      EXPECT_LE((back.value - m).cwiseAbs().maxCoeff(), 1e-14 * d.maxCoeff());
+    }
+  }
+}
+
+TEST(Conditioning, RotatedStretchesUpToTheLimit)
+{
+  // U diag(sigma) V with sigma_1 / sigma_3 = 10^k: the Polar log keeps every singular value to
+  // relative accuracy (their products come from exact minors), the round trip is backward
+  // stable, and beyond kMaxConditionNumber the input is refused. Before: cond 1e8 gave det
+  // errors of 2e-3, 1e12 a factor 168.
+  lct_test::RandomTransforms random(12);
+  for (int k = 0; k <= 16; ++k)
+  {
+    const double cond = std::pow(10.0, k);
+    double worstSigma = 0.0, worstRoundTrip = 0.0;
+    int refused = 0;
+    for (int n = 0; n < 300; ++n)
+    {
+      const Eigen::Vector3d s(
+        std::sqrt(cond), std::pow(cond, random.Uniform(-0.5, 0.5)), 1.0 / std::sqrt(cond));
+      const Eigen::Matrix3d a = random.Rotation() * s.asDiagonal() * random.Rotation();
+      const auto oracle = oracleSingularValues(a);
+      const long double trueCondition = oracle[0] / oracle[2];
+      const auto log = lct::logarithm(affine(a), Parametrisation::Polar);
+      if (!log)
+      {
+        EXPECT_EQ(log.status, Status::IllConditioned);
+        EXPECT_GT(trueCondition, 0.99 * lct::kMaxConditionNumber);
+        ++refused;
+        continue;
+      }
+      EXPECT_LT(trueCondition, 1.01 * lct::kMaxConditionNumber);
+      const Eigen::Vector3d sigma = stretchOf(log.value);
+      for (int i = 0; i < 3; ++i)
+      {
+        worstSigma = std::max(worstSigma, static_cast<double>(std::abs(sigma[i] / oracle[i] - 1)));
+      }
+      const auto back = lct::exponential(log.value, Parametrisation::Polar);
+      ASSERT_TRUE(back.ok());
+      worstRoundTrip =
+        std::max(worstRoundTrip, (back.value.topLeftCorner<3, 3>() - a).norm() / a.norm());
+    }
+    EXPECT_LT(worstSigma, 1e-13) << "cond 1e" << k;
+    EXPECT_LT(worstRoundTrip, 1e-13) << "cond 1e" << k;
+    if (k <= 12)
+    {
+      EXPECT_EQ(refused, 0) << "cond 1e" << k;
+    }
+    if (k >= 14)
+    {
+      EXPECT_EQ(refused, 300) << "cond 1e" << k;
+    }
+  }
+}
+
+TEST(Conditioning, MatrixLogIsAccurateOrRefused)
+{
+  // Turns up to 115 degrees (no negative eigenvalues) with a non-normal ill-conditioned stretch.
+  lct_test::RandomTransforms random(13);
+  for (int k = 0; k <= 14; k += 2)
+  {
+    const double cond = std::pow(10.0, k);
+    for (int n = 0; n < 200; ++n)
+    {
+      const Eigen::Vector3d s(
+        std::sqrt(cond), std::pow(cond, random.Uniform(-0.5, 0.5)), 1.0 / std::sqrt(cond));
+      const Eigen::Matrix3d a = random.Rotation(random.Uniform(0, 2.0)) * s.asDiagonal() *
+        random.Rotation(random.Uniform(0, 0.3));
+      Eigen::Matrix4d m = affine(a);
+      m.topRightCorner<3, 1>() = Eigen::Vector3d(random.Normal(), random.Normal(), random.Normal());
+      const auto log = lct::matrixLog(m);
+      if (!log)
+      {
+        EXPECT_TRUE(log.status == Status::IllConditioned || log.status == Status::NoRealLogarithm)
+          << lct::describe(log.status);
+        continue;
+      }
+      const auto back = lct::matrixExp(log.value);
+      ASSERT_TRUE(back.ok()) << lct::describe(back.status);
+      // Measured: 2e-13 at cond 1e2, 2e-11 at 1e8, 2e-10 at 1e12 (a non-normal log).
+      EXPECT_LT((back.value - m).norm() / m.norm(), 1e-14 * std::sqrt(cond) + 5e-13)
+        << "cond 1e" << k;
+    }
+  }
+}
+
+TEST(Conditioning, ExtremeMagnitudesOfWellConditionedMaps)
+{
+  // Uniform scales 1e102 .. 1e-300 (whose inverse 1e300 is representable): as accurate as I.
+  lct_test::RandomTransforms random(14);
+  for (double scale : { 1e102, 1e200, 1e300, std::exp(-300.0), 1e-200, 1e-300 })
+  {
+    const Eigen::Matrix3d r = random.Rotation();
+    const Eigen::Matrix4d m = affine(scale * r);
+    const auto log = lct::logarithm(m, Parametrisation::Polar);
+    ASSERT_TRUE(log.ok()) << scale << ": " << lct::describe(log.status);
+    const double logScale = std::log(scale);
+    const lct::SymmetricVector y = lct::symmetricPart(log.value);
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(y[i], logScale, 1e-12 * std::abs(logScale)) << scale;
+      EXPECT_NEAR(y[i + 3], 0.0, 1e-12) << scale;
+    }
+    const auto back = lct::exponential(log.value, Parametrisation::Polar);
+    ASSERT_TRUE(back.ok()) << scale;
+    EXPECT_LT((back.value.topLeftCorner<3, 3>() / scale - r).norm(), 1e-12) << scale;
+  }
+  // Subnormal stretches have lost their digits: refused both ways, like exp's underflow.
+  for (Parametrisation p : kBoth)
+  {
+    EXPECT_EQ(lct::logarithm(affine(4e-320 * Eigen::Matrix3d::Identity()), p).status,
+      p == Parametrisation::Polar ? Status::OutOfRange : Status::MagnitudeOutOfRange);
+  }
+  // MatrixLog: within its documented range 1e-135 .. 1e135, and refused with that reason
+  // beyond it.
+  for (double scale : { 1e102, std::exp(-300.0) })
+  {
+    const Eigen::Matrix4d m = affine(scale * random.Rotation(1.0));
+    const auto log = lct::matrixLog(m);
+    ASSERT_TRUE(log.ok()) << scale << ": " << lct::describe(log.status);
+    const auto back = lct::matrixExp(log.value);
+    ASSERT_TRUE(back.ok());
+    // The log's entries are ~log(scale): their round-off is eps |log scale|.
+    EXPECT_LT((back.value.topLeftCorner<3, 3>() - m.topLeftCorner<3, 3>()).norm() / scale,
+      4e-15 * std::abs(std::log(scale)));
+  }
+  for (double scale : { 1e200, 1e-200 })
+  {
+    EXPECT_EQ(lct::matrixLog(affine(scale * Eigen::Matrix3d::Identity())).status,
+      Status::MagnitudeOutOfRange);
+  }
+}
+
+TEST(Conditioning, InterpolationBetweenIllConditionedKeys)
+{
+  // The 2-key case: K0 = diag(1e-6, 1, 1e6), K1 = Rz(10 deg) K0. The step K0^-1 K1 has
+  // condition ~3e10 and entries from 1e-7 to 1e5; halfway, K0 exp(log(K0^-1 K1) / 2) has the
+  // middle entry 294.7 (a 60-digit reference), where the cubic formula gave -179.9.
+  Eigen::Matrix4d keys[2];
+  keys[0] = affine(Eigen::Vector3d(1e-6, 1, 1e6).asDiagonal());
+  keys[1] = keys[0];
+  keys[1].topLeftCorner<3, 3>() =
+    Eigen::AngleAxisd(10.0 * lct_test::kPi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+    keys[0].topLeftCorner<3, 3>();
+  const double w[2] = { 0.5, 0.5 };
+  const auto half = lct::combineRelative(w, keys, 2, 0, Parametrisation::Polar);
+  ASSERT_TRUE(half.ok()) << lct::describe(half.status);
+  EXPECT_NEAR(half.value(1, 1), 294.7, 0.05);
+  // The same from the other key: the two relative forms agree at equal weights up to the
+  // geodesic hand-over, so both are well away from the old -179.9.
+  const auto other = lct::combineRelative(w, keys, 2, 1, Parametrisation::Polar);
+  ASSERT_TRUE(other.ok());
+  EXPECT_GT(other.value(1, 1), 200.0);
+  // Against the oracle of the same formula in long double: the polar factors of the step from
+  // JacobiSVD in long double.
+  const Eigen::Matrix3d step = (lct::inverseAffine(keys[0]) * keys[1]).topLeftCorner<3, 3>();
+  const Eigen::JacobiSVD<LongMatrix3> svd(
+    step.cast<long double>(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  LongMatrix3 u = svd.matrixU(), v = svd.matrixV();
+  if (u.determinant() < 0)
+  {
+    u.col(2) *= -1;
+    v.col(2) *= -1;
+  }
+  const auto sigma = oracleSingularValues(step);
+  const LongMatrix3 rotation = u * v.transpose();
+  const Eigen::AngleAxis<long double> turn(rotation);
+  const LongMatrix3 halfRotation =
+    Eigen::AngleAxis<long double>(0.5L * turn.angle(), turn.axis()).toRotationMatrix();
+  const LongMatrix3 halfStretch = v * sigma.array().sqrt().matrix().asDiagonal() * v.transpose();
+  const LongMatrix3 expected =
+    keys[0].topLeftCorner<3, 3>().cast<long double>() * halfRotation * halfStretch;
+  const Eigen::Matrix3d got = half.value.topLeftCorner<3, 3>();
+  EXPECT_LT(
+    static_cast<double>((got.cast<long double>() - expected).norm() / expected.norm()), 1e-10);
+  EXPECT_NEAR(got(1, 1) / static_cast<double>(expected(1, 1)), 1.0, 1e-9);
+}
+
+TEST(Conditioning, SymmetricFunctionsOfSpreadSpectra)
+{
+  // exp, log and sqrt of sym(3) / SPD(3) with condition 1e3 .. 1e12: from eigenvectors, so
+  // diagonal input is exact and rotated input is backward stable.
+  const Eigen::Matrix3d d = Eigen::Vector3d(1e-6, 1, 1e6).asDiagonal();
+  const auto log = lct::logSPD(d);
+  ASSERT_TRUE(log.ok());
+  EXPECT_NEAR(log.value(0, 0), std::log(1e-6), 1e-14);
+  EXPECT_NEAR(log.value(2, 2), std::log(1e6), 1e-14);
+  EXPECT_NEAR(lct::expSym(log.value)(0, 0) / 1e-6, 1.0, 1e-14);
+  const auto root = lct::sqrtSPD(d);
+  ASSERT_TRUE(root.ok());
+  EXPECT_NEAR(root.value(0, 0) / 1e-3, 1.0, 1e-15);
+  EXPECT_EQ(lct::logSPD(Eigen::Vector3d(1e-14, 1, 1).asDiagonal().toDenseMatrix()).status,
+    Status::IllConditioned);
+  EXPECT_EQ(lct::logSPD(Eigen::Vector3d(1e300, 1e300, 1e300).asDiagonal().toDenseMatrix()).status,
+    Status::Ok);
+  lct_test::RandomTransforms random(15);
+  for (int n = 0; n < 500; ++n)
+  {
+    const double spread = random.Uniform(3.0, 27.0); // cond e^3 .. e^27 ~ 5e11
+    const Eigen::Vector3d mu(0.5 * spread, random.Uniform(-0.5, 0.5) * spread, -0.5 * spread);
+    const Eigen::Matrix3d r = random.Rotation();
+    const Eigen::Matrix3d y = r * mu.asDiagonal() * r.transpose();
+    const Eigen::Matrix3d e = lct::expSym(y);
+    const Eigen::Matrix3d expected = r * mu.array().exp().matrix().asDiagonal() * r.transpose();
+    EXPECT_LT((e - expected).norm() / expected.norm(), 1e-13);
+  }
+}
