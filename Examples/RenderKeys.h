@@ -434,9 +434,19 @@ public:
     throw InputError(this->File + ": " + what);
   }
 
+  /// Prints at most MaxWarnings warnings: a hostile file may hold a million unknown keys.
   void Warn(const std::string& what) const
   {
-    std::cerr << this->File << ": warning: " << what << "\n";
+    static constexpr int MaxWarnings = 20;
+    if (this->Warnings < MaxWarnings)
+    {
+      std::cerr << this->File << ": warning: " << what << "\n";
+    }
+    else if (this->Warnings == MaxWarnings)
+    {
+      std::cerr << this->File << ": warning: more warnings not shown\n";
+    }
+    ++this->Warnings;
   }
 
   void CheckKeys(
@@ -828,6 +838,7 @@ public:
 
 private:
   std::string File;
+  mutable int Warnings = 0;
 };
 
 /// `text` as a finite number in [lo, hi], all of it (strtod alone would take "12abc" as 12 and
