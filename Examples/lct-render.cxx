@@ -1064,6 +1064,8 @@ int main(int argc, char* argv[])
   }
   // A file-size limit then fails the write (EFBIG, reported) instead of killing the process.
   std::signal(SIGXFSZ, SIG_IGN);
+  // Xlib ends the process with exit() when the X server goes away mid-run.
+  std::atexit(RemoveTemporaries);
 
   Options opt;
   bool help = false;
