@@ -1,6 +1,8 @@
-// Keyframes for Examples/lct-render.cxx: the JSON keyframe file format, its validation (messages
-// name the file and the key, e.g. `keys.json: camera.keys[3].view_angle must be in (0, 180)`) and
-// the built-in keys (the CameraFlightScene flight plus a spinning, shearing cone).
+// The input of Examples/lct-render.cxx: the JSON keyframe file format and its validation
+// (messages name the file and the key, e.g. `keys.json: camera.keys[3].view_angle must be in
+// [1e-08, 179]`), ParaView camera files (.pvcc), the built-in keys (the CameraFlightScene flight
+// plus a spinning, shearing cone), the limits every input is held to, and the checks a mesh file
+// passes before a VTK reader sees it (RenderMeshCheck below).
 //
 // Header-only: everything is `inline`. Needs nlohmann_json and VTK::RenderingCore.
 #ifndef RenderKeys_h
@@ -8,22 +10,33 @@
 
 #include "CameraFlightScene.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLDataParser.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -33,11 +46,167 @@
 namespace RenderKeys
 {
 
+/// What lct-render accepts. Each bounds an allocation or keeps a value where double (and the
+/// single-precision OpenGL pipeline) still computes something meaningful; `lct-render --help`
+/// and the README list them.
+namespace Limits
+{
+constexpr int MaxFrames = 1000000;
+constexpr int MinSide = 16;
+constexpr int MaxSide = 16384;
+constexpr long long MaxPixels = 1LL << 26; // 67 Mpixel, e.g. 8192x8192
+/// Keys per track (the camera, each prop). vtkCameraInterpolatorLCT loads 10^4 keys in 0.15 s.
+constexpr size_t MaxKeys = 10000;
+/// Camera keys with --compare: VTK's vtkCameraInterpolator rebuilds its splines in quadratic
+/// time (7 s for 10^4 keys, 87 s for 3 10^4).
+constexpr size_t MaxCompareKeys = 1000;
+constexpr std::uintmax_t MaxKeysFileBytes = 32u << 20;
+constexpr int MaxJsonDepth = 64;
+constexpr std::uintmax_t MaxPvccBytes = 1u << 20;
+constexpr int MaxPvccElements = 10000;
+/// |time| of a key; key times are also compared exactly, so they must be distinct doubles.
+constexpr double MaxTime = 1e12;
+/// |coordinate| of positions, focal points, translations and mesh points: the squared
+/// distances stay far from overflow and 7 significant digits of float32 keep their meaning.
+constexpr double MaxCoordinate = 1e15;
+/// Lengths: parallel scale, clipping range.
+constexpr double MinLength = 1e-12;
+constexpr double MaxLength = 1e15;
+/// vtkCamera::SetViewAngle clamps to this range, so a key outside it would not be reproduced.
+constexpr double MinViewAngle = 1e-8;
+constexpr double MaxViewAngle = 179.0;
+/// |window_center|, |view_shear| and |shear| entries.
+constexpr double MaxOffset = 1e3;
+constexpr double MinScale = 1e-9;
+constexpr double MaxScale = 1e9;
+/// |rotate angle| in degrees.
+constexpr double MaxAngle = 1e6;
+constexpr int MaxMeshes = 16;
+constexpr std::uintmax_t MaxMeshFileBytes = 1u << 30;
+constexpr long long MaxMeshPoints = 1LL << 24;
+constexpr long long MaxMeshCells = 1LL << 24;
+/// Indices in all cells of a mesh.
+constexpr long long MaxMeshIndices = 1LL << 26;
+} // namespace Limits
+
 /// An input error; what() is the complete message (file name first).
 struct InputError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+/// The shortest text that reads back as exactly `v` (so 1e-07 is not printed as 0.000000, and
+/// two times that differ in the 17th digit look different).
+inline std::string Num(double v)
+{
+  if (std::isnan(v))
+  {
+    return "nan";
+  }
+  if (std::isinf(v))
+  {
+    return v > 0 ? "inf" : "-inf";
+  }
+  char buffer[32];
+  if (v == std::floor(v) && std::fabs(v) < 1e15)
+  {
+    std::snprintf(buffer, sizeof buffer, "%.0f", v);
+    return buffer;
+  }
+  for (int precision = 1; precision <= 17; ++precision)
+  {
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, v);
+    if (std::strtod(buffer, nullptr) == v)
+    {
+      break;
+    }
+  }
+  return buffer;
+}
+
+/// `text` with bytes that could drive a terminal (or are not ASCII) shown as \xNN, cut to 80
+/// characters: names from a hostile file end up in messages.
+inline std::string Printable(const std::string& text)
+{
+  std::string out;
+  for (size_t i = 0; i < text.size() && i < 80; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      out += static_cast<char>(c);
+    }
+    else
+    {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    }
+  }
+  if (text.size() > 80)
+  {
+    out += "...";
+  }
+  return out;
+}
+
+/// "1:7" for byte offset `offset` (0-based) of `text`.
+inline std::string LineColumn(const std::string& text, size_t offset)
+{
+  size_t line = 1, column = 1;
+  const size_t end = std::min(offset, text.size());
+  for (size_t i = 0; i < end; ++i)
+  {
+    if (text[i] == '\n')
+    {
+      ++line;
+      column = 1;
+    }
+    else
+    {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+/// The whole of a regular file of at most `limit` bytes; throws InputError naming `what`.
+inline std::string ReadSmallFile(const std::string& file, std::uintmax_t limit, const char* what)
+{
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+  {
+    throw InputError(file + ": cannot open " + what + ": " +
+      (ec ? ec.message() : std::string(std::strerror(ENOENT))));
+  }
+  if (!std::filesystem::is_regular_file(status))
+  {
+    throw InputError(file + ": cannot open " + what + ": not a regular file");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec)
+  {
+    throw InputError(file + ": cannot open " + what + ": " + ec.message());
+  }
+  if (size > limit)
+  {
+    throw InputError(file + ": the " + what + " has " + std::to_string(size) + " bytes; at most " +
+      std::to_string(limit) + " are accepted");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+  {
+    throw InputError(file + ": cannot open " + what + ": " + std::strerror(errno));
+  }
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(&text[0], static_cast<std::streamsize>(size));
+  if (in.gcount() != static_cast<std::streamsize>(size))
+  {
+    throw InputError(file + ": cannot read " + what);
+  }
+  return text;
+}
 
 struct CameraKey
 {
@@ -65,7 +234,7 @@ struct Keys
   std::string Source = "built-in keys"; // file name, for messages
   std::string Interpolation = "spline";
   bool ConsistentRotation = false; // camera
-  std::vector<CameraKey> Camera;
+  std::vector<CameraKey> Camera;   // in increasing time (see SortByTime)
   std::map<std::string, PropTrack> Props;
 };
 
@@ -74,29 +243,111 @@ inline bool IsInterpolationName(const std::string& name)
   return name == "linear" || name == "spline" || name == "bspline" || name == "subdivision";
 }
 
+/// Sorts keys by time and refuses equal times, in O(n log n). Key files may list keys in any
+/// order; the interpolators load sorted keys at the end of their arrays, which is the cheap end.
+template <typename Key>
+void SortByTime(std::vector<Key>& keys, const std::string& file)
+{
+  std::stable_sort(
+    keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.Time < b.Time; });
+  for (size_t i = 1; i < keys.size(); ++i)
+  {
+    if (keys[i].Time == keys[i - 1].Time)
+    {
+      throw InputError(file + ": " + keys[i].Path + ".time " + Num(keys[i].Time) + " repeats " +
+        keys[i - 1].Path + ".time (key times must differ)");
+    }
+  }
+}
+
+/// A camera key's values before they become a vtkCamera (shared by the JSON and .pvcc readers).
+struct CameraValues
+{
+  double Position[3] = { 0.0, 0.0, 1.0 };
+  double FocalPoint[3] = { 0.0, 0.0, 0.0 };
+  double ViewUp[3] = { 0.0, 1.0, 0.0 };
+  double ViewAngle = 30.0;
+  double ParallelScale = 1.0;
+  bool Parallel = false;
+  double WindowCenter[2] = { 0.0, 0.0 };
+  double ViewShear[3] = { 0.0, 0.0, 1.0 };
+  double ClippingRange[2] = { 0.01, 1000.01 };
+};
+
+/// The checks of a camera key beyond the ranges of single values, each naming the true cause;
+/// `fail` receives the message (after `path`). Values are finite and in range here, so no
+/// product below can overflow.
+template <typename Fail>
+vtkSmartPointer<vtkCamera> MakeCamera(CameraValues v, const std::string& path, Fail fail)
+{
+  double direction[3];
+  vtkMath::Subtract(v.FocalPoint, v.Position, direction);
+  const double distance = vtkMath::Norm(direction);
+  const double scale = 1.0 + std::max(vtkMath::Norm(v.Position), vtkMath::Norm(v.FocalPoint));
+  if (!(distance > 1e-12 * scale))
+  {
+    fail(path + " is degenerate: position and focal_point " +
+      (distance == 0.0 ? std::string("are equal")
+                       : "are only " + Num(distance) + " apart, below 1e-12 of their magnitude"));
+  }
+  // The view-up direction matters, not its length: scale by its largest entry so that tiny
+  // (even denormal) vectors are judged by their direction and vtkCamera gets a normal one.
+  const double upMax =
+    std::max({ std::fabs(v.ViewUp[0]), std::fabs(v.ViewUp[1]), std::fabs(v.ViewUp[2]) });
+  if (upMax == 0.0)
+  {
+    fail(path + ".view_up is zero");
+  }
+  double up[3] = { v.ViewUp[0] / upMax, v.ViewUp[1] / upMax, v.ViewUp[2] / upMax };
+  vtkMath::Normalize(up);
+  double unit[3] = { direction[0] / distance, direction[1] / distance, direction[2] / distance };
+  double cross[3];
+  vtkMath::Cross(unit, up, cross);
+  if (!(vtkMath::Norm(cross) > 1e-9))
+  {
+    fail(path + " is degenerate: view_up is parallel to the view direction");
+  }
+  if (!(v.ClippingRange[1] > v.ClippingRange[0]))
+  {
+    fail(path + ".clipping_range must be [near, far] with near < far");
+  }
+  auto c = vtkSmartPointer<vtkCamera>::New();
+  c->SetPosition(v.Position);
+  c->SetFocalPoint(v.FocalPoint);
+  c->SetViewUp(up);
+  c->SetViewAngle(v.ViewAngle);
+  c->SetWindowCenter(v.WindowCenter[0], v.WindowCenter[1]);
+  c->SetViewShear(v.ViewShear);
+  c->SetParallelScale(v.ParallelScale);
+  c->SetParallelProjection(v.Parallel ? 1 : 0);
+  c->SetClippingRange(v.ClippingRange);
+  return c;
+}
+
 /// Row-major matrix of translate * rotate * shear * scale (a point is scaled, sheared, rotated,
 /// then translated). rotate = {angle in degrees, axis}; shear = {xy, xz, yz}: x += xy y + xz z,
-/// y += yz z.
+/// y += yz z. The axis must not be zero.
 inline std::array<double, 16> ComposeTRS(
   const double translate[3], const double rotate[4], const double scale[3], const double shear[3])
 {
-  double axis[3] = { rotate[1], rotate[2], rotate[3] };
-  double r[3][3];
+  // Scale the axis by its largest entry first: its norm could overflow (1e200) or underflow
+  // (1e-200) and leave a matrix that is no rotation at all.
+  const double axisMax =
+    std::max({ std::fabs(rotate[1]), std::fabs(rotate[2]), std::fabs(rotate[3]) });
+  double axis[3] = { 0.0, 0.0, 1.0 };
+  if (axisMax > 0.0)
+  {
+    axis[0] = rotate[1] / axisMax;
+    axis[1] = rotate[2] / axisMax;
+    axis[2] = rotate[3] / axisMax;
+  }
   const double n = vtkMath::Norm(axis);
-  if (n > 0.0)
-  {
-    const double a = vtkMath::RadiansFromDegrees(rotate[0]);
-    const double c = std::cos(a), s = std::sin(a), C = 1.0 - c;
-    const double x = axis[0] / n, y = axis[1] / n, z = axis[2] / n;
-    const double rr[3][3] = { { c + x * x * C, x * y * C - z * s, x * z * C + y * s },
-      { y * x * C + z * s, c + y * y * C, y * z * C - x * s },
-      { z * x * C - y * s, z * y * C + x * s, c + z * z * C } };
-    std::memcpy(r, rr, sizeof r);
-  }
-  else
-  {
-    vtkMath::Identity3x3(r);
-  }
+  const double a = vtkMath::RadiansFromDegrees(std::fmod(rotate[0], 360.0));
+  const double c = std::cos(a), s = std::sin(a), C = 1.0 - c;
+  const double x = axis[0] / n, y = axis[1] / n, z = axis[2] / n;
+  const double r[3][3] = { { c + x * x * C, x * y * C - z * s, x * z * C + y * s },
+    { y * x * C + z * s, c + y * y * C, y * z * C - x * s },
+    { z * x * C - y * s, z * y * C + x * s, c + z * z * C } };
   const double sh[3][3] = { { 1.0, shear[0], shear[1] }, { 0.0, 1.0, shear[2] },
     { 0.0, 0.0, 1.0 } };
   double rs[3][3];
@@ -153,6 +404,23 @@ inline Keys BuiltIn()
 // ---------------------------------------------------------------------------------------------
 // JSON
 
+/// nlohmann's DOM builder, but a parse error (including a number that overflows a double, e.g.
+/// 1e400, which nlohmann reports as out_of_range 406) keeps the byte offset it happened at.
+struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
+{
+  using nlohmann::detail::json_sax_dom_parser<nlohmann::json>::json_sax_dom_parser;
+  size_t ErrorOffset = 0;
+  std::string ErrorMessage;
+
+  template <class Exception>
+  bool parse_error(size_t offset, const std::string&, const Exception& ex)
+  {
+    this->ErrorOffset = offset;
+    this->ErrorMessage = ex.what();
+    return false;
+  }
+};
+
 class Parser
 {
 public:
@@ -166,9 +434,19 @@ public:
     throw InputError(this->File + ": " + what);
   }
 
+  /// Prints at most MaxWarnings warnings: a hostile file may hold a million unknown keys.
   void Warn(const std::string& what) const
   {
-    std::cerr << this->File << ": warning: " << what << "\n";
+    static constexpr int MaxWarnings = 20;
+    if (this->Warnings < MaxWarnings)
+    {
+      std::cerr << this->File << ": warning: " << what << "\n";
+    }
+    else if (this->Warnings == MaxWarnings)
+    {
+      std::cerr << this->File << ": warning: more warnings not shown\n";
+    }
+    ++this->Warnings;
   }
 
   void CheckKeys(
@@ -178,7 +456,8 @@ public:
     {
       if (!known.count(it.key()))
       {
-        this->Warn("unknown key " + (path.empty() ? "" : path + ".") + it.key() + " (ignored)");
+        this->Warn(
+          "unknown key " + (path.empty() ? "" : path + ".") + Printable(it.key()) + " (ignored)");
       }
     }
   }
@@ -199,7 +478,9 @@ public:
     return v;
   }
 
-  double Number(const nlohmann::json& v, const std::string& path) const
+  /// A finite number within [lo, hi] (the parser already refuses overflow, NaN and Inf are no
+  /// JSON; the range is what each field can meaningfully hold).
+  double Number(const nlohmann::json& v, const std::string& path, double lo, double hi) const
   {
     if (!v.is_number())
     {
@@ -210,12 +491,17 @@ public:
     {
       this->Fail(path + " must be finite");
     }
+    if (!(d >= lo && d <= hi))
+    {
+      this->Fail(
+        path + " = " + Num(d) + " is out of range: must be in [" + Num(lo) + ", " + Num(hi) + "]");
+    }
     return d;
   }
 
-  /// Reads key as an array of n finite numbers into out; returns false when absent.
+  /// Reads key as an array of n numbers in [lo, hi] into out; returns false when absent.
   bool Vector(const nlohmann::json& object, const char* key, const std::string& path, size_t n,
-    double* out) const
+    double* out, double lo, double hi) const
   {
     if (!object.contains(key))
     {
@@ -229,7 +515,7 @@ public:
     }
     for (size_t i = 0; i < n; ++i)
     {
-      out[i] = this->Number(v[i], p + "[" + std::to_string(i) + "]");
+      out[i] = this->Number(v[i], p + "[" + std::to_string(i) + "]", lo, hi);
     }
     return true;
   }
@@ -240,7 +526,7 @@ public:
     {
       this->Fail(path + ".time is missing");
     }
-    return this->Number(key.at("time"), path + ".time");
+    return this->Number(key.at("time"), path + ".time", -Limits::MaxTime, Limits::MaxTime);
   }
 
   std::string Interpolation(const nlohmann::json& object, const std::string& path) const
@@ -253,7 +539,7 @@ public:
     const std::string name = v.get<std::string>();
     if (!IsInterpolationName(name))
     {
-      this->Fail(path + ".interpolation: unknown interpolation \"" + name +
+      this->Fail(path + ".interpolation: unknown interpolation \"" + Printable(name) +
         "\" (expected linear, spline, bspline or subdivision)");
     }
     return name;
@@ -268,6 +554,22 @@ public:
     return v.get<bool>();
   }
 
+  const nlohmann::json& KeyArray(
+    const nlohmann::json& object, const std::string& path, size_t limit) const
+  {
+    if (!object.contains("keys") || !object.at("keys").is_array())
+    {
+      this->Fail(path + ".keys must be an array of keys");
+    }
+    const nlohmann::json& keys = object.at("keys");
+    if (keys.size() > limit)
+    {
+      this->Fail(path + ".keys has " + std::to_string(keys.size()) + " keys; at most " +
+        std::to_string(limit) + " are accepted");
+    }
+    return keys;
+  }
+
   CameraKey ReadCameraKey(const nlohmann::json& key, const std::string& path) const
   {
     if (!key.is_object())
@@ -280,70 +582,37 @@ public:
     CameraKey out;
     out.Path = path;
     out.Time = this->Time(key, path);
-    double position[3], focal[3], up[3] = { 0.0, 1.0, 0.0 }, center[2] = { 0.0, 0.0 },
-                                  shear[3] = { 0.0, 0.0, 1.0 }, range[2] = { 0.01, 1000.01 };
-    if (!this->Vector(key, "position", path, 3, position))
+    CameraValues v;
+    const double X = Limits::MaxCoordinate;
+    if (!this->Vector(key, "position", path, 3, v.Position, -X, X))
     {
       this->Fail(path + ".position is missing");
     }
-    if (!this->Vector(key, "focal_point", path, 3, focal))
+    if (!this->Vector(key, "focal_point", path, 3, v.FocalPoint, -X, X))
     {
       this->Fail(path + ".focal_point is missing");
     }
-    this->Vector(key, "view_up", path, 3, up);
-    this->Vector(key, "window_center", path, 2, center);
-    this->Vector(key, "view_shear", path, 3, shear);
-    const bool hasRange = this->Vector(key, "clipping_range", path, 2, range);
-    double angle = 30.0, scale = 1.0;
-    bool parallel = false;
+    this->Vector(key, "view_up", path, 3, v.ViewUp, -X, X);
+    this->Vector(
+      key, "window_center", path, 2, v.WindowCenter, -Limits::MaxOffset, Limits::MaxOffset);
+    this->Vector(key, "view_shear", path, 3, v.ViewShear, -Limits::MaxOffset, Limits::MaxOffset);
+    this->Vector(
+      key, "clipping_range", path, 2, v.ClippingRange, Limits::MinLength, Limits::MaxLength);
     if (key.contains("view_angle"))
     {
-      angle = this->Number(key.at("view_angle"), path + ".view_angle");
-      if (!(angle > 0.0 && angle < 180.0))
-      {
-        this->Fail(path + ".view_angle must be in (0, 180)");
-      }
+      v.ViewAngle = this->Number(
+        key.at("view_angle"), path + ".view_angle", Limits::MinViewAngle, Limits::MaxViewAngle);
     }
     if (key.contains("parallel_scale"))
     {
-      scale = this->Number(key.at("parallel_scale"), path + ".parallel_scale");
-      if (!(scale > 0.0))
-      {
-        this->Fail(path + ".parallel_scale must be > 0");
-      }
+      v.ParallelScale = this->Number(
+        key.at("parallel_scale"), path + ".parallel_scale", Limits::MinLength, Limits::MaxLength);
     }
     if (key.contains("parallel"))
     {
-      parallel = this->Bool(key.at("parallel"), path + ".parallel");
+      v.Parallel = this->Bool(key.at("parallel"), path + ".parallel");
     }
-    double direction[3];
-    vtkMath::Subtract(focal, position, direction);
-    const double distance = vtkMath::Norm(direction);
-    if (!(distance > 1e-12 * (1.0 + vtkMath::Norm(position))))
-    {
-      this->Fail(path + " is degenerate: position equals focal_point");
-    }
-    double cross[3];
-    vtkMath::Cross(direction, up, cross);
-    if (!(vtkMath::Norm(cross) > 1e-9 * distance * vtkMath::Norm(up)))
-    {
-      this->Fail(path + " is degenerate: view_up is zero or parallel to the view direction");
-    }
-    if (hasRange && !(range[0] > 0.0 && range[1] > range[0]))
-    {
-      this->Fail(path + ".clipping_range must be [near, far] with 0 < near < far");
-    }
-    out.Camera = vtkSmartPointer<vtkCamera>::New();
-    vtkCamera* c = out.Camera;
-    c->SetPosition(position);
-    c->SetFocalPoint(focal);
-    c->SetViewUp(up);
-    c->SetViewAngle(angle);
-    c->SetWindowCenter(center[0], center[1]);
-    c->SetViewShear(shear);
-    c->SetParallelScale(scale);
-    c->SetParallelProjection(parallel ? 1 : 0);
-    c->SetClippingRange(range);
+    out.Camera = MakeCamera(v, path, [this](const std::string& m) { this->Fail(m); });
     return out;
   }
 
@@ -357,6 +626,7 @@ public:
     PropKey out;
     out.Path = path;
     out.Time = this->Time(key, path);
+    const double X = Limits::MaxCoordinate;
     if (key.contains("matrix"))
     {
       for (const char* other : { "translate", "rotate", "scale", "shear" })
@@ -366,7 +636,7 @@ public:
           this->Fail(path + " has both matrix and " + other + " (give one or the other)");
         }
       }
-      this->Vector(key, "matrix", path, 16, out.Matrix.data());
+      this->Vector(key, "matrix", path, 16, out.Matrix.data(), -X, X);
       if (out.Matrix[12] != 0.0 || out.Matrix[13] != 0.0 || out.Matrix[14] != 0.0 ||
         out.Matrix[15] != 1.0)
       {
@@ -377,55 +647,121 @@ public:
     {
       double t[3] = { 0.0, 0.0, 0.0 }, r[4] = { 0.0, 0.0, 0.0, 1.0 }, s[3] = { 1.0, 1.0, 1.0 },
              h[3] = { 0.0, 0.0, 0.0 };
-      this->Vector(key, "translate", path, 3, t);
-      if (this->Vector(key, "rotate", path, 4, r) && r[0] != 0.0 && vtkMath::Norm(r + 1) == 0.0)
+      this->Vector(key, "translate", path, 3, t, -X, X);
+      if (this->Vector(key, "rotate", path, 4, r, -X, X))
       {
-        this->Fail(path + ".rotate: the axis [ax, ay, az] must not be zero");
+        if (!(std::fabs(r[0]) <= Limits::MaxAngle))
+        {
+          this->Fail(path + ".rotate[0] = " + Num(r[0]) +
+            " is out of range: the angle must be in [" + Num(-Limits::MaxAngle) + ", " +
+            Num(Limits::MaxAngle) + "] degrees");
+        }
+        if (r[1] == 0.0 && r[2] == 0.0 && r[3] == 0.0)
+        {
+          this->Fail(path + ".rotate: the axis [ax, ay, az] must not be zero");
+        }
       }
-      this->Vector(key, "scale", path, 3, s);
-      if (!(s[0] > 0.0 && s[1] > 0.0 && s[2] > 0.0))
+      this->Vector(key, "scale", path, 3, s, -Limits::MaxScale, Limits::MaxScale);
+      for (int i = 0; i < 3; ++i)
       {
-        this->Fail(path + ".scale must be positive (a mirror has no rotation log)");
+        if (!(s[i] >= Limits::MinScale))
+        {
+          this->Fail(path + ".scale[" + std::to_string(i) + "] = " + Num(s[i]) +
+            ": scale factors must be in [" + Num(Limits::MinScale) + ", " + Num(Limits::MaxScale) +
+            "] (a mirror or a collapse has no rotation log)");
+        }
       }
-      this->Vector(key, "shear", path, 3, h);
+      this->Vector(key, "shear", path, 3, h, -Limits::MaxOffset, Limits::MaxOffset);
       out.Matrix = ComposeTRS(t, r, s, h);
     }
     return out;
   }
 
-  Keys Read(const std::string& text) const
+  /// Refuses nesting deeper than MaxJsonDepth before nlohmann builds (and later destroys) it.
+  void CheckDepth(const std::string& text) const
   {
-    nlohmann::json doc;
-    try
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i)
     {
-      doc = nlohmann::json::parse(text);
-    }
-    catch (const nlohmann::json::parse_error& e)
-    {
-      // e.byte: 1-based index of the last byte read.
-      size_t line = 1, column = 1;
-      const size_t end = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-      for (size_t i = 0; i < end; ++i)
+      const char c = text[i];
+      if (inString)
       {
-        if (text[i] == '\n')
+        if (c == '\\')
         {
-          ++line;
-          column = 1;
+          ++i;
         }
-        else
+        else if (c == '"')
         {
-          ++column;
+          inString = false;
         }
       }
-      std::string what = e.what();
+      else if (c == '"')
+      {
+        inString = true;
+      }
+      else if (c == '[' || c == '{')
+      {
+        if (++depth > Limits::MaxJsonDepth)
+        {
+          throw InputError(this->File + ":" + LineColumn(text, i) + ": JSON nested deeper than " +
+            std::to_string(Limits::MaxJsonDepth) + " levels");
+        }
+      }
+      else if (c == ']' || c == '}')
+      {
+        --depth;
+      }
+    }
+  }
+
+  nlohmann::json Parse(const std::string& text) const
+  {
+    this->CheckDepth(text);
+    nlohmann::json doc;
+    JsonBuilder builder(doc, true);
+    bool ok = false;
+    try
+    {
+      ok = nlohmann::json::sax_parse(text, &builder);
+    }
+    catch (const nlohmann::json::exception& e)
+    {
+      // Not reported through parse_error (nlohmann throws some errors directly).
+      this->Fail(std::string("JSON error: ") + e.what());
+    }
+    if (!ok)
+    {
+      // The offset is one past the last byte read.
+      std::string what = builder.ErrorMessage;
       const size_t bracket = what.find("] ");
       if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
       {
         what = what.substr(bracket + 2);
       }
-      throw InputError(this->File + ":" + std::to_string(line) + ":" + std::to_string(column) +
+      throw InputError(this->File + ":" +
+        LineColumn(text, builder.ErrorOffset > 0 ? builder.ErrorOffset - 1 : 0) +
         ": JSON parse error: " + what);
     }
+    return doc;
+  }
+
+  Keys Read(const std::string& text) const
+  {
+    const nlohmann::json doc = this->Parse(text);
+    try
+    {
+      return this->Read(doc);
+    }
+    catch (const nlohmann::json::exception& e)
+    {
+      // Every access above is checked first; this is the net under them.
+      this->Fail(std::string("unexpected JSON content: ") + e.what());
+    }
+  }
+
+  Keys Read(const nlohmann::json& doc) const
+  {
     if (!doc.is_object())
     {
       this->Fail("the top level must be an object with \"camera\" (and optionally \"props\")");
@@ -444,21 +780,10 @@ public:
       keys.ConsistentRotation =
         this->Bool(camera.at("consistent_rotation"), "camera.consistent_rotation");
     }
-    if (!camera.contains("keys") || !camera.at("keys").is_array())
-    {
-      this->Fail("camera.keys must be an array of key cameras");
-    }
-    const nlohmann::json& cameraKeys = camera.at("keys");
-    std::map<double, std::string> times;
+    const nlohmann::json& cameraKeys = this->KeyArray(camera, "camera", Limits::MaxKeys);
     for (size_t i = 0; i < cameraKeys.size(); ++i)
     {
       CameraKey key = this->ReadCameraKey(cameraKeys[i], "camera.keys[" + std::to_string(i) + "]");
-      if (times.count(key.Time))
-      {
-        this->Fail(
-          key.Path + ".time " + std::to_string(key.Time) + " repeats " + times[key.Time] + ".time");
-      }
-      times[key.Time] = key.Path;
       if (!keys.Camera.empty() &&
         keys.Camera.front().Camera->GetParallelProjection() != key.Camera->GetParallelProjection())
       {
@@ -472,12 +797,13 @@ public:
     {
       this->Fail("camera.keys: needs at least 2 keys, found " + std::to_string(keys.Camera.size()));
     }
+    SortByTime(keys.Camera, this->File);
     if (doc.contains("props"))
     {
       const nlohmann::json& props = this->Object(doc, "props", "");
       for (auto it = props.begin(); it != props.end(); ++it)
       {
-        const std::string path = "props." + it.key();
+        const std::string path = "props." + Printable(it.key());
         if (!it.value().is_object())
         {
           this->Fail(path + " must be an object");
@@ -493,23 +819,17 @@ public:
           track.ConsistentRotation =
             this->Bool(it.value().at("consistent_rotation"), path + ".consistent_rotation");
         }
-        if (!it.value().contains("keys") || !it.value().at("keys").is_array() ||
-          it.value().at("keys").empty())
+        const nlohmann::json& propKeys = this->KeyArray(it.value(), path, Limits::MaxKeys);
+        if (propKeys.empty())
         {
           this->Fail(path + ".keys must be a non-empty array of keys");
         }
-        const nlohmann::json& propKeys = it.value().at("keys");
-        std::map<double, std::string> propTimes;
         for (size_t i = 0; i < propKeys.size(); ++i)
         {
-          PropKey key = this->ReadPropKey(propKeys[i], path + ".keys[" + std::to_string(i) + "]");
-          if (propTimes.count(key.Time))
-          {
-            this->Fail(key.Path + ".time repeats " + propTimes[key.Time] + ".time");
-          }
-          propTimes[key.Time] = key.Path;
-          track.Keys.push_back(key);
+          track.Keys.push_back(
+            this->ReadPropKey(propKeys[i], path + ".keys[" + std::to_string(i) + "]"));
         }
+        SortByTime(track.Keys, this->File);
         keys.Props[it.key()] = track;
       }
     }
@@ -518,29 +838,95 @@ public:
 
 private:
   std::string File;
+  mutable int Warnings = 0;
 };
+
+/// `text` as a finite number in [lo, hi], all of it (strtod alone would take "12abc" as 12 and
+/// "nan" as NaN; VTK's GetScalarAttribute takes "abc" as 0).
+inline bool ParseNumber(const char* text, double lo, double hi, double& out)
+{
+  if (!text)
+  {
+    return false;
+  }
+  const char* begin = text;
+  while (*begin == ' ' || *begin == '\t' || *begin == '\n' || *begin == '\r')
+  {
+    ++begin;
+  }
+  // Only decimal notation: strtod would also take hex floats, "inf" and "nan".
+  for (const char* p = begin; *p; ++p)
+  {
+    if (!std::strchr("0123456789+-.eE \t\r\n", *p))
+    {
+      return false;
+    }
+  }
+  char* end = nullptr;
+  // An underflow (ERANGE with a denormal or zero) is taken at its value; an overflow is not
+  // finite and fails below.
+  const double v = std::strtod(begin, &end);
+  if (end == begin)
+  {
+    return false;
+  }
+  while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r')
+  {
+    ++end;
+  }
+  if (*end != '\0' || !std::isfinite(v) || !(v >= lo && v <= hi))
+  {
+    return false;
+  }
+  out = v;
+  return true;
+}
 
 /**
  * A camera key from a ParaView camera file (.pvcc, written by ParaView's "Save Camera": a
  * PVCameraConfiguration holding the render view's Camera* properties). Position, focal point and
  * view up are required; view angle, parallel scale and parallel projection are read when
- * present. Throws InputError naming the file and the missing or malformed property.
+ * present. Every value of these properties must be a finite decimal number in its field's range
+ * (Limits); each property must have all of its elements, once. Throws InputError naming the
+ * file, the property and the bad text.
  */
 inline CameraKey ReadPvcc(const std::string& file, double time)
 {
-  vtkNew<vtkXMLDataParser> parser;
-  parser->SetFileName(file.c_str());
-  if (!std::ifstream(file).good())
+  const std::string text = ReadSmallFile(file, Limits::MaxPvccBytes, "camera file");
+  // vtkXMLDataElement frees its children recursively: bound the number of elements (a real
+  // .pvcc has about 40) so that no nesting depth can exhaust the stack.
+  if (std::count(text.begin(), text.end(), '<') > Limits::MaxPvccElements)
   {
-    throw InputError(file + ": cannot open camera file: " + std::strerror(errno));
+    throw InputError(file + ": more than " + std::to_string(Limits::MaxPvccElements) +
+      " XML elements; not a ParaView camera file");
   }
+  vtkNew<vtkXMLDataParser> parser;
   parser->SetIgnoreCharacterData(1);
+  // The parser reports malformed XML through vtkErrorMacro; the message below says it better,
+  // and an observer keeps VTK from printing it.
+  vtkNew<vtkCallbackCommand> quiet;
+  parser->AddObserver(vtkCommand::ErrorEvent, quiet);
+  parser->AddObserver(vtkCommand::WarningEvent, quiet);
+  std::istringstream stream(text);
+  parser->SetStream(&stream);
   if (!parser->Parse() || !parser->GetRootElement() ||
     std::string(parser->GetRootElement()->GetName()) != "PVCameraConfiguration")
   {
-    throw InputError(file + ": not a ParaView camera file (no PVCameraConfiguration element)");
+    throw InputError(file +
+      ": not a ParaView camera file (malformed XML or no "
+      "PVCameraConfiguration element)");
   }
-  // name -> values of the <Property name=...><Element index=i value=v/></Property> elements.
+  struct Range
+  {
+    int Size;
+    double Lo, Hi;
+  };
+  const double X = Limits::MaxCoordinate;
+  const std::map<std::string, Range> wanted = { { "CameraPosition", { 3, -X, X } },
+    { "CameraFocalPoint", { 3, -X, X } }, { "CameraViewUp", { 3, -X, X } },
+    { "CameraViewAngle", { 1, Limits::MinViewAngle, Limits::MaxViewAngle } },
+    { "CameraParallelScale", { 1, Limits::MinLength, Limits::MaxLength } },
+    { "CameraParallelProjection", { 1, 0.0, 1.0 } } };
   std::map<std::string, std::vector<double>> properties;
   std::vector<vtkXMLDataElement*> pending{ parser->GetRootElement() };
   while (!pending.empty())
@@ -552,73 +938,984 @@ inline CameraKey ReadPvcc(const std::string& file, double time)
       pending.push_back(e->GetNestedElement(i));
     }
     const char* name = e->GetAttribute("name");
-    if (std::string(e->GetName()) != "Property" || !name)
+    if (std::string(e->GetName()) != "Property" || !name || !wanted.count(name))
     {
       continue;
     }
-    std::vector<double>& values = properties[name];
+    const Range& range = wanted.at(name);
+    const std::string where = file + ": " + name;
+    if (properties.count(name))
+    {
+      throw InputError(where + " appears twice");
+    }
+    std::vector<double> values(range.Size, 0.0);
+    std::vector<bool> seen(range.Size, false);
     for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
     {
       vtkXMLDataElement* element = e->GetNestedElement(i);
-      int index = -1;
-      double value = 0.0;
-      if (std::string(element->GetName()) == "Element" &&
-        element->GetScalarAttribute("index", index) &&
-        element->GetScalarAttribute("value", value) && index >= 0 && index < 16)
+      if (std::string(element->GetName()) != "Element")
       {
-        values.resize(std::max<size_t>(values.size(), index + 1), 0.0);
-        values[index] = value;
+        continue;
+      }
+      const char* indexText = element->GetAttribute("index");
+      const char* valueText = element->GetAttribute("value");
+      double index = -1.0;
+      if (!ParseNumber(indexText, 0.0, range.Size - 1, index) || index != std::floor(index))
+      {
+        throw InputError(where + ": element index \"" +
+          Printable(indexText ? indexText : "(missing)") + "\" is not one of 0.." +
+          std::to_string(range.Size - 1));
+      }
+      const int k = static_cast<int>(index);
+      if (seen[k])
+      {
+        throw InputError(where + ": element " + std::to_string(k) + " appears twice");
+      }
+      if (!ParseNumber(valueText, range.Lo, range.Hi, values[k]))
+      {
+        throw InputError(where + "[" + std::to_string(k) + "]: value \"" +
+          Printable(valueText ? valueText : "(missing)") + "\" is not a finite number in [" +
+          Num(range.Lo) + ", " + Num(range.Hi) + "]");
+      }
+      seen[k] = true;
+    }
+    for (int k = 0; k < range.Size; ++k)
+    {
+      if (!seen[k])
+      {
+        throw InputError(where + " has no element " + std::to_string(k) + " (needs " +
+          std::to_string(range.Size) + ")");
       }
     }
+    properties[name] = values;
   }
-  auto vector3 = [&](const char* name) {
-    const auto it = properties.find(name);
-    if (it == properties.end() || it->second.size() != 3)
+  for (const char* required : { "CameraPosition", "CameraFocalPoint", "CameraViewUp" })
+  {
+    if (!properties.count(required))
     {
-      throw InputError(file + ": " + name + " is missing or not 3 numbers");
+      throw InputError(file + ": " + required + " is missing");
     }
-    return it->second;
-  };
+  }
+  CameraValues v;
+  std::copy_n(properties["CameraPosition"].begin(), 3, v.Position);
+  std::copy_n(properties["CameraFocalPoint"].begin(), 3, v.FocalPoint);
+  std::copy_n(properties["CameraViewUp"].begin(), 3, v.ViewUp);
+  if (properties.count("CameraViewAngle"))
+  {
+    v.ViewAngle = properties["CameraViewAngle"][0];
+  }
+  if (properties.count("CameraParallelScale"))
+  {
+    v.ParallelScale = properties["CameraParallelScale"][0];
+  }
+  if (properties.count("CameraParallelProjection"))
+  {
+    v.Parallel = properties["CameraParallelProjection"][0] != 0.0;
+  }
   CameraKey key;
   key.Time = time;
-  key.Path = "camera (" + file + ")";
-  key.Camera = vtkSmartPointer<vtkCamera>::New();
-  key.Camera->SetPosition(vector3("CameraPosition").data());
-  key.Camera->SetFocalPoint(vector3("CameraFocalPoint").data());
-  key.Camera->SetViewUp(vector3("CameraViewUp").data());
-  const auto angle = properties.find("CameraViewAngle");
-  if (angle != properties.end() && angle->second.size() == 1)
-  {
-    key.Camera->SetViewAngle(angle->second[0]);
-  }
-  const auto scale = properties.find("CameraParallelScale");
-  if (scale != properties.end() && scale->second.size() == 1)
-  {
-    key.Camera->SetParallelScale(scale->second[0]);
-  }
-  const auto parallel = properties.find("CameraParallelProjection");
-  if (parallel != properties.end() && parallel->second.size() == 1)
-  {
-    key.Camera->SetParallelProjection(parallel->second[0] != 0.0);
-  }
+  key.Path = "camera";
+  key.Camera =
+    MakeCamera(v, "camera", [&](const std::string& m) { throw InputError(file + ": " + m); });
   return key;
 }
 
 /// Reads and validates a keyframe file; throws InputError.
 inline Keys ReadFile(const std::string& file)
 {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
+  return Parser(file).Read(ReadSmallFile(file, Limits::MaxKeysFileBytes, "keys file"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// RenderMeshCheck: what a --mesh file must pass before a VTK reader sees it. VTK 9.1's readers
+// crash (PLY: an out-of-range face index, a short line, a truncated file; OBJ: an out-of-range
+// vt/vn index; legacy VTK: a truncated ASCII body) or allocate whatever a header declares (PLY,
+// binary STL, legacy VTK, XML) on hostile files, and pass out-of-range indices and NaN points on
+// to the renderer. lct-render also runs the reader in a child process (see ReadMesh there).
+
+/// Reads a file's bytes through a cursor, naming the file and the offending line or offset.
+class MeshText
+{
+public:
+  MeshText(std::string file, std::string data)
+    : File(std::move(file))
+    , Data(std::move(data))
   {
-    throw InputError(file + ": cannot open keys file: " + std::strerror(errno));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad())
+
+  [[noreturn]] void Fail(const std::string& what) const
   {
-    throw InputError(file + ": cannot read keys file");
+    throw InputError(this->File + ": " + what);
   }
-  return Parser(file).Read(text.str());
+  [[noreturn]] void FailAt(const std::string& what) const
+  {
+    throw InputError(this->File + ":" + LineColumn(this->Data, this->At) + ": " + what);
+  }
+
+  bool AtEnd() const { return this->At >= this->Data.size(); }
+  size_t Remaining() const { return this->Data.size() - std::min(this->At, this->Data.size()); }
+
+  /// The next line without its end of line; false at the end of the data.
+  bool Line(std::string& line, size_t maxLength)
+  {
+    if (this->AtEnd())
+    {
+      return false;
+    }
+    const size_t nl = this->Data.find('\n', this->At);
+    const size_t end = nl == std::string::npos ? this->Data.size() : nl;
+    if (end - this->At > maxLength)
+    {
+      this->FailAt("line longer than " + std::to_string(maxLength) + " bytes");
+    }
+    line.assign(this->Data, this->At, end - this->At);
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    this->LineStart = this->At;
+    this->At = nl == std::string::npos ? this->Data.size() : nl + 1;
+    return true;
+  }
+
+  /// Moves back to the start of the line last read (for messages about it).
+  void Rewind() { this->At = this->LineStart; }
+
+  /// The next whitespace-separated token (across lines); empty at the end.
+  std::string Token()
+  {
+    while (!this->AtEnd() && std::isspace(static_cast<unsigned char>(this->Data[this->At])))
+    {
+      ++this->At;
+    }
+    const size_t begin = this->At;
+    while (!this->AtEnd() && !std::isspace(static_cast<unsigned char>(this->Data[this->At])))
+    {
+      ++this->At;
+    }
+    return this->Data.substr(begin, this->At - begin);
+  }
+
+  const unsigned char* Bytes(size_t n)
+  {
+    if (this->Remaining() < n)
+    {
+      this->FailAt("the file is truncated: " + std::to_string(n) + " more bytes expected, " +
+        std::to_string(this->Remaining()) + " left");
+    }
+    const auto* p = reinterpret_cast<const unsigned char*>(this->Data.data() + this->At);
+    this->At += n;
+    return p;
+  }
+
+  const std::string& data() const { return this->Data; }
+  size_t& position() { return this->At; }
+  const std::string& file() const { return this->File; }
+
+private:
+  std::string File;
+  std::string Data;
+  size_t At = 0;
+  size_t LineStart = 0;
+};
+
+inline std::vector<std::string> Words(const std::string& line)
+{
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+/// A whole decimal integer token in [lo, hi].
+inline bool ParseInteger(const std::string& token, long long lo, long long hi, long long& out)
+{
+  if (token.empty() || token.size() > 20)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(token.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || v < lo || v > hi)
+  {
+    return false;
+  }
+  out = v;
+  return true;
+}
+
+/// Binary scalar types of PLY and legacy VTK files: size in bytes, integer or not.
+struct ScalarType
+{
+  int Size = 0;
+  bool Integer = false;
+  bool Signed = false;
+};
+
+inline bool PlyType(const std::string& name, ScalarType& t)
+{
+  static const std::map<std::string, ScalarType> types = { { "char", { 1, true, true } },
+    { "int8", { 1, true, true } }, { "uchar", { 1, true, false } }, { "uint8", { 1, true, false } },
+    { "short", { 2, true, true } }, { "int16", { 2, true, true } },
+    { "ushort", { 2, true, false } }, { "uint16", { 2, true, false } },
+    { "int", { 4, true, true } }, { "int32", { 4, true, true } }, { "uint", { 4, true, false } },
+    { "uint32", { 4, true, false } }, { "float", { 4, false, true } },
+    { "float32", { 4, false, true } }, { "double", { 8, false, true } },
+    { "float64", { 8, false, true } } };
+  const auto it = types.find(name);
+  if (it == types.end())
+  {
+    return false;
+  }
+  t = it->second;
+  return true;
+}
+
+/// A binary value of type t at p, as double (integers exactly up to 2^53).
+inline double BinaryValue(const unsigned char* p, const ScalarType& t, bool bigEndian)
+{
+  unsigned char b[8];
+  for (int i = 0; i < t.Size; ++i)
+  {
+    b[i] = bigEndian ? p[t.Size - 1 - i] : p[i]; // to little endian (this machine's)
+  }
+  if (!t.Integer)
+  {
+    if (t.Size == 4)
+    {
+      float f;
+      std::memcpy(&f, b, 4);
+      return f;
+    }
+    double d;
+    std::memcpy(&d, b, 8);
+    return d;
+  }
+  unsigned long long u = 0;
+  for (int i = t.Size - 1; i >= 0; --i)
+  {
+    u = (u << 8) | b[i];
+  }
+  if (t.Signed && t.Size < 8 && (u >> (8 * t.Size - 1)))
+  {
+    return static_cast<double>(static_cast<long long>(u) - (1LL << (8 * t.Size)));
+  }
+  return static_cast<double>(u);
+}
+
+inline void CheckCoordinate(const MeshText& text, double v, const std::string& where)
+{
+  if (!std::isfinite(v) || std::fabs(v) > Limits::MaxCoordinate)
+  {
+    text.FailAt(where + " = " + Num(v) + " is not a finite coordinate within +-1e15");
+  }
+}
+
+/// PLY (ASCII, binary little/big endian): the header, then every element instance the way
+/// vtkPLY reads it (ASCII: one instance per line, of at most 4095 bytes).
+inline void CheckPly(MeshText& text)
+{
+  struct Property
+  {
+    std::string Name;
+    ScalarType Type;
+    bool List = false;
+    ScalarType CountType;
+  };
+  struct Element
+  {
+    std::string Name;
+    long long Count = 0;
+    std::vector<Property> Properties;
+  };
+  std::string line;
+  if (!text.Line(line, 4095) || line != "ply")
+  {
+    text.Fail("not a PLY file (the first line is not \"ply\")");
+  }
+  std::string format;
+  std::vector<Element> elements;
+  bool ended = false;
+  while (!ended && text.Line(line, 4095))
+  {
+    const std::vector<std::string> w = Words(line);
+    if (w.empty() || w[0] == "comment" || w[0] == "obj_info")
+    {
+      continue;
+    }
+    if (w[0] == "format" && w.size() == 3)
+    {
+      format = w[1];
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+      {
+        text.Rewind();
+        text.FailAt("unknown PLY format \"" + Printable(format) + "\"");
+      }
+    }
+    else if (w[0] == "element" && w.size() == 3)
+    {
+      Element e;
+      e.Name = w[1];
+      const long long limit = e.Name == "vertex" ? Limits::MaxMeshPoints : Limits::MaxMeshCells;
+      if (!ParseInteger(w[2], 0, limit, e.Count))
+      {
+        text.Rewind();
+        text.FailAt("element " + Printable(e.Name) + " count \"" + Printable(w[2]) +
+          "\" is not an integer in [0, " + std::to_string(limit) + "]");
+      }
+      elements.push_back(e);
+    }
+    else if (w[0] == "property" && !elements.empty() &&
+      ((w.size() == 3 && w[1] != "list") || (w.size() == 5 && w[1] == "list")))
+    {
+      Property p;
+      p.List = w[1] == "list";
+      p.Name = w.back();
+      if (!PlyType(w[p.List ? 3 : 1], p.Type) || (p.List && !PlyType(w[2], p.CountType)) ||
+        (p.List && !p.CountType.Integer))
+      {
+        text.Rewind();
+        text.FailAt("bad property type in \"" + Printable(line) + "\"");
+      }
+      elements.back().Properties.push_back(p);
+    }
+    else if (w[0] == "end_header" && w.size() == 1)
+    {
+      ended = true;
+    }
+    else
+    {
+      text.Rewind();
+      text.FailAt("unexpected PLY header line \"" + Printable(line) + "\"");
+    }
+  }
+  if (!ended || format.empty())
+  {
+    text.Fail("the PLY header is incomplete (no format line or no end_header)");
+  }
+  const Element* vertex = nullptr;
+  for (const auto& e : elements)
+  {
+    if (e.Name == "vertex")
+    {
+      vertex = &e;
+    }
+  }
+  auto has = [](const Element* e, const char* name) {
+    return e && std::any_of(e->Properties.begin(), e->Properties.end(), [&](const Property& p) {
+      return p.Name == name && !p.List;
+    });
+  };
+  if (!has(vertex, "x") || !has(vertex, "y") || !has(vertex, "z"))
+  {
+    text.Fail("no vertex element with x, y and z properties");
+  }
+  const bool ascii = format == "ascii", big = format == "binary_big_endian";
+  // A first bound before walking: every instance takes at least one byte per scalar.
+  unsigned long long least = 0;
+  for (const auto& e : elements)
+  {
+    least += static_cast<unsigned long long>(e.Count) * (ascii ? 2 : 1) *
+      std::max<size_t>(1, e.Properties.size());
+  }
+  if (least > text.Remaining())
+  {
+    text.Fail("the file is truncated: its header declares at least " + std::to_string(least) +
+      " bytes of data, the file has " + std::to_string(text.Remaining()) + " after the header");
+  }
+  const long long vertices = vertex->Count;
+  for (const auto& e : elements)
+  {
+    const bool isFace = e.Name == "face";
+    for (long long i = 0; i < e.Count; ++i)
+    {
+      const std::string where = e.Name + " " + std::to_string(i);
+      std::vector<std::string> w;
+      size_t next = 0;
+      if (ascii)
+      {
+        if (!text.Line(line, 4095))
+        {
+          text.FailAt(
+            "the file is truncated: " + where + " of " + std::to_string(e.Count) + " is missing");
+        }
+        w = Words(line);
+        text.Rewind();
+      }
+      auto value = [&](const ScalarType& t, const std::string& what) {
+        if (!ascii)
+        {
+          return BinaryValue(text.Bytes(static_cast<size_t>(t.Size)), t, big);
+        }
+        if (next >= w.size())
+        {
+          text.FailAt(where + ": too few values on its line (" + std::to_string(w.size()) + ")");
+        }
+        const std::string& token = w[next++];
+        double v = 0.0;
+        if (!ParseNumber(token.c_str(), -DBL_MAX, DBL_MAX, v) || (t.Integer && v != std::floor(v)))
+        {
+          text.FailAt(where + ": " + what + " \"" + Printable(token) + "\" is not " +
+            (t.Integer ? "an integer" : "a finite number"));
+        }
+        return v;
+      };
+      for (const auto& p : e.Properties)
+      {
+        if (!p.List)
+        {
+          const double v = value(p.Type, p.Name);
+          if (&e == vertex && (p.Name == "x" || p.Name == "y" || p.Name == "z"))
+          {
+            CheckCoordinate(text, v, where + " " + p.Name);
+          }
+          continue;
+        }
+        const double n = value(p.CountType, p.Name + " count");
+        const bool indices = isFace && (p.Name == "vertex_indices" || p.Name == "vertex_index");
+        if (n < 0 || n > (ascii ? static_cast<double>(w.size()) : 1e9) ||
+          n * p.Type.Size > static_cast<double>(text.Remaining()) + (ascii ? 1e9 : 0.0))
+        {
+          text.FailAt(where + ": list " + p.Name + " of " + Num(n) + " entries does not fit");
+        }
+        if (indices && n < 3)
+        {
+          text.FailAt(where + ": a face needs at least 3 vertices, this one has " + Num(n));
+        }
+        for (long long k = 0; k < static_cast<long long>(n); ++k)
+        {
+          const double v = value(p.Type, p.Name);
+          if (indices && !(v >= 0 && v < static_cast<double>(vertices) && v == std::floor(v)))
+          {
+            text.FailAt(where + ": vertex index " + Num(v) + " is out of range (the file has " +
+              std::to_string(vertices) + " vertices)");
+          }
+        }
+      }
+      if (ascii)
+      {
+        if (next != w.size())
+        {
+          text.FailAt(where + ": " + std::to_string(w.size()) + " values on its line, " +
+            std::to_string(next) + " expected");
+        }
+        text.Line(line, 4095);
+      }
+    }
+  }
+}
+
+/// OBJ: every line; indices may be negative (relative to the entries so far) or positive (at
+/// most the file's count), never 0.
+inline void CheckObj(MeshText& text)
+{
+  const size_t maxLine = 262144;    // vtkOBJReader's line buffer
+  long long total[3] = { 0, 0, 0 }; // v, vt, vn
+  std::string line;
+  while (text.Line(line, maxLine - 1))
+  {
+    const std::vector<std::string> w = Words(line);
+    if (!w.empty() && (w[0] == "v" || w[0] == "vt" || w[0] == "vn"))
+    {
+      ++total[w[0] == "v" ? 0 : w[0] == "vt" ? 1 : 2];
+    }
+  }
+  text.position() = 0;
+  long long seen[3] = { 0, 0, 0 };
+  const char* const kinds[3] = { "vertex", "texture coordinate", "normal" };
+  const char* const plural[3] = { "vertices", "texture coordinates", "normals" };
+  while (text.Line(line, maxLine - 1))
+  {
+    const std::vector<std::string> w = Words(line);
+    if (w.empty() || w[0][0] == '#')
+    {
+      continue;
+    }
+    text.Rewind();
+    if (w[0] == "v" || w[0] == "vt" || w[0] == "vn")
+    {
+      const int kind = w[0] == "v" ? 0 : w[0] == "vt" ? 1 : 2;
+      const size_t needed = kind == 1 ? 2 : 3;
+      if (w.size() < needed + 1)
+      {
+        text.FailAt(w[0] + " needs " + std::to_string(needed) + " numbers");
+      }
+      for (size_t i = 1; i < w.size(); ++i)
+      {
+        double v = 0.0;
+        if (!ParseNumber(w[i].c_str(), -Limits::MaxCoordinate, Limits::MaxCoordinate, v))
+        {
+          text.FailAt(w[0] + ": \"" + Printable(w[i]) + "\" is not a finite number within +-1e15");
+        }
+      }
+      ++seen[kind];
+    }
+    else if (w[0] == "f" || w[0] == "l" || w[0] == "p")
+    {
+      const size_t least = w[0] == "f" ? 3 : w[0] == "l" ? 2 : 1;
+      if (w.size() < least + 1)
+      {
+        text.FailAt(w[0] + " needs at least " + std::to_string(least) + " vertices");
+      }
+      for (size_t i = 1; i < w.size(); ++i)
+      {
+        // i, i/j, i//k, i/j/k
+        size_t start = 0;
+        for (int part = 0; part < 3 && start <= w[i].size(); ++part)
+        {
+          const size_t slash = w[i].find('/', start);
+          const std::string token =
+            w[i].substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+          start = slash == std::string::npos ? w[i].size() + 1 : slash + 1;
+          if (token.empty() && part > 0)
+          {
+            continue;
+          }
+          long long index = 0;
+          if (!ParseInteger(token, -total[part], total[part], index) || index == 0 ||
+            (index < 0 && -index > seen[part]))
+          {
+            text.FailAt(w[0] + ": " + kinds[part] + " index \"" + Printable(token) +
+              "\" is out of range (the file has " + std::to_string(total[part]) + " " +
+              (total[part] == 1 ? kinds[part] : plural[part]) + ")");
+          }
+        }
+        if (start <= w[i].size())
+        {
+          text.FailAt(w[0] + ": \"" + Printable(w[i]) + "\" is not i, i/j, i//k or i/j/k");
+        }
+      }
+    }
+    text.Line(line, maxLine - 1);
+  }
+  if (total[0] > Limits::MaxMeshPoints)
+  {
+    text.Fail(std::to_string(total[0]) + " vertices; at most " +
+      std::to_string(Limits::MaxMeshPoints) + " are accepted");
+  }
+}
+
+/// STL: binary (as VTK's vtksys::SystemTools::DetectFileType decides: 5 % or more of the first
+/// 256 bytes not text) must be exactly 84 + 50 n bytes with n from its header; ASCII must start
+/// with "solid" and is then VTK's parser's (it reports errors and does not over-allocate).
+inline void CheckStl(MeshText& text)
+{
+  const std::string& d = text.data();
+  const size_t probe = std::min<size_t>(d.size(), 256);
+  size_t binary = 0;
+  for (size_t i = 0; i < probe; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(d[i]);
+    if (!(std::isprint(c) || std::isspace(c)))
+    {
+      ++binary;
+    }
+  }
+  if (probe > 0 && binary * 20 < probe)
+  {
+    const size_t begin = d.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos || d.compare(begin, 5, "solid") != 0)
+    {
+      text.Fail("neither a binary STL file nor an ASCII one (an ASCII STL starts with \"solid\")");
+    }
+    return;
+  }
+  if (d.size() < 84)
+  {
+    text.Fail("binary STL file of " + std::to_string(d.size()) +
+      " bytes is shorter than its 84-byte header");
+  }
+  const unsigned long long n = static_cast<unsigned long long>(
+    BinaryValue(reinterpret_cast<const unsigned char*>(d.data()) + 80, { 4, true, false }, false));
+  const unsigned long long expected = 84 + 50 * n;
+  if (expected != d.size())
+  {
+    text.Fail("binary STL header declares " + std::to_string(n) + " triangle(s) (" +
+      std::to_string(expected) + " bytes), but the file has " + std::to_string(d.size()) +
+      " bytes");
+  }
+  if (n == 0 || static_cast<long long>(n) > Limits::MaxMeshCells)
+  {
+    text.Fail("binary STL with " + std::to_string(n) + " triangles; 1 to " +
+      std::to_string(Limits::MaxMeshCells) + " are accepted");
+  }
+  for (unsigned long long i = 0; i < n; ++i)
+  {
+    const auto* tri = reinterpret_cast<const unsigned char*>(d.data()) + 84 + 50 * i;
+    for (int c = 3; c < 12; ++c) // the 3 vertices (the normal is recomputed by nobody: ignored)
+    {
+      const double v = BinaryValue(tri + 4 * c, { 4, false, true }, false);
+      if (!std::isfinite(v) || std::fabs(v) > Limits::MaxCoordinate)
+      {
+        text.Fail("triangle " + std::to_string(i) + " has the vertex coordinate " + Num(v) +
+          " (not finite or beyond +-1e15)");
+      }
+    }
+  }
+}
+
+/// Legacy VTK POLYDATA: the header, then POINTS and the cell sections (legacy "n size" layout
+/// and the OFFSETS/CONNECTIVITY one of version 5.1), ASCII or binary; attribute sections after
+/// them (POINT_DATA, CELL_DATA, FIELD) are VTK's.
+inline void CheckLegacyVtk(MeshText& text)
+{
+  std::string line;
+  if (!text.Line(line, 256) || line.rfind("# vtk DataFile Version", 0) != 0)
+  {
+    text.Fail("not a legacy VTK file (no \"# vtk DataFile Version\" first line)");
+  }
+  if (!text.Line(line, 256))
+  {
+    text.Fail("the file is truncated after its first line");
+  }
+  if (!text.Line(line, 256) ||
+    (Words(line) != std::vector<std::string>{ "ASCII" } &&
+      Words(line) != std::vector<std::string>{ "BINARY" }))
+  {
+    text.Fail("the third line must be ASCII or BINARY");
+  }
+  const bool binary = Words(line)[0] == "BINARY";
+  if (text.Token() != "DATASET" || text.Token() != "POLYDATA")
+  {
+    text.Fail("lct-render reads DATASET POLYDATA only from legacy VTK files");
+  }
+  static const std::map<std::string, ScalarType> types = { { "bit", { 0, true, false } },
+    { "unsigned_char", { 1, true, false } }, { "char", { 1, true, true } },
+    { "unsigned_short", { 2, true, false } }, { "short", { 2, true, true } },
+    { "unsigned_int", { 4, true, false } }, { "int", { 4, true, true } },
+    { "unsigned_long", { 8, true, false } }, { "long", { 8, true, true } },
+    { "vtktypeint64", { 8, true, true } }, { "vtktypeuint64", { 8, true, false } },
+    { "vtkIdType", { 8, true, true } }, { "float", { 4, false, true } },
+    { "double", { 8, false, true } } };
+  long long points = -1;
+  long long totalCells = 0, totalIndices = 0;
+  // n values of type t: binary after the end of the current line, ASCII as tokens.
+  auto values = [&](long long n, const ScalarType& t, const std::string& what, auto&& each) {
+    if (binary)
+    {
+      std::string rest;
+      text.Line(rest, 1 << 20); // the end of the keyword line
+      const double bytes = static_cast<double>(n) * t.Size;
+      if (bytes > static_cast<double>(text.Remaining()))
+      {
+        text.FailAt("the file is truncated: " + what + " needs " + Num(bytes) + " bytes, " +
+          std::to_string(text.Remaining()) + " left");
+      }
+      for (long long i = 0; i < n; ++i)
+      {
+        each(i, BinaryValue(text.Bytes(static_cast<size_t>(t.Size)), t, true));
+      }
+      return;
+    }
+    if (static_cast<double>(n) * 2 > static_cast<double>(text.Remaining()) + 1)
+    {
+      text.FailAt("the file is truncated: " + what + " declares " + std::to_string(n) +
+        " values, the " + std::to_string(text.Remaining()) + " bytes left cannot hold them");
+    }
+    for (long long i = 0; i < n; ++i)
+    {
+      const std::string token = text.Token();
+      double v = 0.0;
+      if (token.empty())
+      {
+        text.FailAt("the file is truncated: " + what + " has " + std::to_string(i) + " of " +
+          std::to_string(n) + " values");
+      }
+      if (!ParseNumber(token.c_str(), -DBL_MAX, DBL_MAX, v) || (t.Integer && v != std::floor(v)))
+      {
+        text.FailAt(what + ": \"" + Printable(token) + "\" is not " +
+          (t.Integer ? "an integer" : "a finite number"));
+      }
+      each(i, v);
+    }
+  };
+  auto checkIndex = [&](double v, const std::string& what) {
+    if (!(v >= 0 && v < static_cast<double>(points)))
+    {
+      text.FailAt(what + ": point index " + Num(v) + " is out of range (the file has " +
+        std::to_string(points) + " points)");
+    }
+  };
+  for (;;)
+  {
+    const size_t keywordAt = text.position();
+    const std::string keyword = text.Token();
+    if (keyword.empty())
+    {
+      break;
+    }
+    if (keyword == "POINT_DATA" || keyword == "CELL_DATA" || keyword == "FIELD")
+    {
+      break;
+    }
+    if (keyword == "METADATA")
+    {
+      // Information keys up to the next empty line.
+      const size_t blank = text.data().find("\n\n", text.position());
+      text.position() = blank == std::string::npos ? text.data().size() : blank + 2;
+      continue;
+    }
+    long long n = 0, size = 0;
+    if (keyword == "POINTS")
+    {
+      const std::string count = text.Token(), type = text.Token();
+      if (points >= 0 || !ParseInteger(count, 0, Limits::MaxMeshPoints, n) || !types.count(type) ||
+        types.at(type).Size == 0)
+      {
+        text.position() = keywordAt;
+        text.FailAt("POINTS " + Printable(count) + " " + Printable(type) +
+          ": expected one POINTS section of at most " + std::to_string(Limits::MaxMeshPoints) +
+          " points of a numeric type");
+      }
+      points = n;
+      values(3 * n, types.at(type), "POINTS", [&](long long i, double v) {
+        if (!std::isfinite(v) || std::fabs(v) > Limits::MaxCoordinate)
+        {
+          text.FailAt("POINTS: coordinate " + std::to_string(i) + " = " + Num(v) +
+            " is not finite or beyond +-1e15");
+        }
+      });
+      continue;
+    }
+    if (keyword != "VERTICES" && keyword != "LINES" && keyword != "POLYGONS" &&
+      keyword != "TRIANGLE_STRIPS")
+    {
+      text.position() = keywordAt;
+      text.FailAt("unexpected \"" + Printable(keyword) + "\" in a POLYDATA file");
+    }
+    const std::string a = text.Token(), b = text.Token();
+    if (points < 0)
+    {
+      text.position() = keywordAt;
+      text.FailAt(keyword + " before POINTS");
+    }
+    if (!ParseInteger(a, 0, Limits::MaxMeshCells + 1, n) ||
+      !ParseInteger(b, 0, Limits::MaxMeshIndices + Limits::MaxMeshCells, size))
+    {
+      text.position() = keywordAt;
+      text.FailAt(keyword + " " + Printable(a) + " " + Printable(b) + ": counts beyond " +
+        std::to_string(Limits::MaxMeshCells) + " cells or " +
+        std::to_string(Limits::MaxMeshIndices) + " indices, or not integers");
+    }
+    const size_t afterCounts = text.position();
+    const std::string next = text.Token();
+    text.position() = afterCounts;
+    if (next == "OFFSETS")
+    {
+      // Version 5.1: n offsets (cells + 1), size connectivity entries.
+      text.Token();
+      const std::string type = text.Token();
+      if (!types.count(type) || !types.at(type).Integer || types.at(type).Size == 0)
+      {
+        text.FailAt("OFFSETS of type \"" + Printable(type) + "\"");
+      }
+      double previous = 0.0;
+      values(n, types.at(type), keyword + " OFFSETS", [&](long long i, double v) {
+        if ((i == 0 && v != 0.0) || v < previous || v > static_cast<double>(size))
+        {
+          text.FailAt(keyword + " OFFSETS: offset " + std::to_string(i) + " = " + Num(v) +
+            " is not in order within [0, " + std::to_string(size) + "]");
+        }
+        previous = v;
+      });
+      if (n > 0 && previous != static_cast<double>(size))
+      {
+        text.FailAt(keyword + ": the last offset " + Num(previous) +
+          " is not the connectivity "
+          "size " +
+          std::to_string(size));
+      }
+      if (text.Token() != "CONNECTIVITY")
+      {
+        text.FailAt(keyword + ": CONNECTIVITY expected after OFFSETS");
+      }
+      const std::string ctype = text.Token();
+      if (!types.count(ctype) || !types.at(ctype).Integer || types.at(ctype).Size == 0)
+      {
+        text.FailAt("CONNECTIVITY of type \"" + Printable(ctype) + "\"");
+      }
+      values(size, types.at(ctype), keyword + " CONNECTIVITY",
+        [&](long long, double v) { checkIndex(v, keyword); });
+      totalCells += std::max<long long>(0, n - 1);
+      totalIndices += size;
+    }
+    else
+    {
+      // Legacy: n cells as (count, indices...) in size integers.
+      long long remaining = 0, cells = 0;
+      values(size, { 4, true, true }, keyword, [&](long long, double v) {
+        if (remaining == 0)
+        {
+          if (!(v >= 1 && v <= static_cast<double>(size)) || ++cells > n)
+          {
+            text.FailAt(keyword + ": cell " + std::to_string(cells) + " has the size " + Num(v) +
+              " (the section declares " + std::to_string(n) + " cells in " + std::to_string(size) +
+              " values)");
+          }
+          remaining = static_cast<long long>(v);
+          return;
+        }
+        checkIndex(v, keyword);
+        --remaining;
+      });
+      if (remaining != 0 || cells != n)
+      {
+        text.FailAt(keyword + ": " + std::to_string(cells) + " cells in " + std::to_string(size) +
+          " values, the section declares " + std::to_string(n));
+      }
+      totalCells += n;
+      totalIndices += size - n;
+    }
+    if (totalCells > Limits::MaxMeshCells || totalIndices > Limits::MaxMeshIndices)
+    {
+      text.Fail("more than " + std::to_string(Limits::MaxMeshCells) + " cells or " +
+        std::to_string(Limits::MaxMeshIndices) + " cell indices");
+    }
+  }
+  if (points <= 0)
+  {
+    text.Fail("no points (a POLYDATA file needs a POINTS section with at least one point)");
+  }
+}
+
+/// VTK XML PolyData: the NumberOf* attributes of each Piece against the limits (the reader
+/// allocates them before it reads a byte of data); the XML and its data are VTK's.
+inline void CheckVtp(MeshText& text)
+{
+  const std::string& d = text.data();
+  const size_t end = std::min(d.size(), d.find("<AppendedData"));
+  long long points = 0, cells = 0;
+  for (const char* attribute : { "NumberOfPoints=\"", "NumberOfVerts=\"", "NumberOfLines=\"",
+         "NumberOfStrips=\"", "NumberOfPolys=\"" })
+  {
+    for (size_t at = d.find(attribute); at < end; at = d.find(attribute, at + 1))
+    {
+      const size_t begin = at + std::strlen(attribute);
+      const size_t close = d.find('"', begin);
+      long long n = 0;
+      if (close == std::string::npos ||
+        !ParseInteger(d.substr(begin, close - begin), 0, Limits::MaxMeshPoints, n))
+      {
+        text.position() = at;
+        text.FailAt(std::string(attribute, std::strlen(attribute) - 2) + " \"" +
+          Printable(d.substr(begin, std::min<size_t>(close - begin, 40))) +
+          "\" is not an integer in [0, " + std::to_string(Limits::MaxMeshPoints) + "]");
+      }
+      (std::strcmp(attribute, "NumberOfPoints=\"") == 0 ? points : cells) += n;
+    }
+  }
+  if (points > Limits::MaxMeshPoints || cells > Limits::MaxMeshCells)
+  {
+    text.Fail("the pieces declare " + std::to_string(points) + " points and " +
+      std::to_string(cells) + " cells; at most " + std::to_string(Limits::MaxMeshPoints) + " and " +
+      std::to_string(Limits::MaxMeshCells) + " are accepted");
+  }
+}
+
+/// The checks of a mesh file before a VTK reader opens it (`ext` lower case, with the dot).
+inline void CheckMeshFile(const std::string& file, const std::string& ext)
+{
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+  {
+    throw InputError(file +
+      ": cannot open mesh file: " + (ec ? ec.message() : std::string(std::strerror(ENOENT))));
+  }
+  if (!std::filesystem::is_regular_file(status))
+  {
+    throw InputError(file + ": cannot open mesh file: not a regular file");
+  }
+  if (std::filesystem::file_size(file, ec) == 0 && !ec)
+  {
+    throw InputError(file + ": the mesh file is empty");
+  }
+  MeshText text(file, ReadSmallFile(file, Limits::MaxMeshFileBytes, "mesh file"));
+  if (ext == ".ply")
+  {
+    CheckPly(text);
+  }
+  else if (ext == ".obj")
+  {
+    CheckObj(text);
+  }
+  else if (ext == ".stl")
+  {
+    CheckStl(text);
+  }
+  else if (ext == ".vtk")
+  {
+    CheckLegacyVtk(text);
+  }
+  else
+  {
+    CheckVtp(text);
+  }
+}
+
+/// The checks of what a reader produced: points and cells present and within the limits, every
+/// point finite and within +-1e15, every cell index in range.
+inline void CheckMeshData(vtkPolyData* mesh, const std::string& file)
+{
+  const vtkIdType n = mesh ? mesh->GetNumberOfPoints() : 0;
+  if (n == 0)
+  {
+    throw InputError(file + ": no points could be read (empty or malformed mesh)");
+  }
+  if (n > Limits::MaxMeshPoints)
+  {
+    throw InputError(file + ": " + std::to_string(n) + " points; at most " +
+      std::to_string(Limits::MaxMeshPoints) + " are accepted");
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    for (double v : x)
+    {
+      if (!std::isfinite(v) || std::fabs(v) > Limits::MaxCoordinate)
+      {
+        throw InputError(file + ": point " + std::to_string(i) + " has the coordinate " + Num(v) +
+          " (not finite or beyond +-1e15)");
+      }
+    }
+  }
+  long long cells = 0, indices = 0;
+  for (vtkCellArray* array :
+    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+  {
+    if (!array)
+    {
+      continue;
+    }
+    cells += array->GetNumberOfCells();
+    vtkDataArray* connectivity = array->GetConnectivityArray();
+    const vtkIdType m = connectivity ? connectivity->GetNumberOfTuples() : 0;
+    indices += m;
+    if (cells > Limits::MaxMeshCells || indices > Limits::MaxMeshIndices)
+    {
+      throw InputError(file + ": more than " + std::to_string(Limits::MaxMeshCells) + " cells or " +
+        std::to_string(Limits::MaxMeshIndices) + " cell indices");
+    }
+    for (vtkIdType i = 0; i < m; ++i)
+    {
+      const double v = connectivity->GetComponent(i, 0);
+      if (!(v >= 0 && v < static_cast<double>(n)))
+      {
+        throw InputError(file + ": a cell refers to point " + Num(v) +
+          ", out of range (the mesh has " + std::to_string(n) + " points)");
+      }
+    }
+  }
+  if (cells == 0)
+  {
+    throw InputError(file + ": the mesh has points but no cells (nothing to draw)");
+  }
 }
 
 } // namespace RenderKeys

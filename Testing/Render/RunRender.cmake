@@ -1,7 +1,15 @@
 # Driver for the Render.* tests of lct-render (cmake -P). Variables:
-#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error
+#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error | metric
 #   LCT_OUT     scratch directory        LCT_ARGS  extra arguments, separated by |
-#   LCT_EXPECT  (error) phrase stderr must contain
+#   LCT_EXPECT  (error, metric) phrase stderr (error) or stdout (metric) must contain
+#   LCT_EXIT    (error) the exit code expected, default 1 (2 for usage errors)
+#   LCT_SETUP   (error) what to put in the way first: dir-in-the-way (a directory named
+#               frame_0000.png in LCT_OUT), out-is-file (LCT_OUT a regular file),
+#               many-keys=N[:compare] (a keys file of N camera keys, LCT_OUT/many.json)
+#   LCT_FSIZE   (error) file-size limit for lct-render, in 512-byte blocks (sh's ulimit -f)
+#   LCT_ENV     (error) NAME=VALUE in lct-render's environment
+# After an error, no temporary (.*.part) may remain, and nothing at all may be written unless
+# LCT_SETUP or LCT_FSIZE made the run fail only after frames were written.
 # Rendering modes print "LCT_SKIP" (the test's SKIP_REGULAR_EXPRESSION) when lct-render exits 125
 # (no DISPLAY): cmake -P cannot exit with 125 itself.
 cmake_minimum_required(VERSION 3.22)
@@ -15,6 +23,7 @@ function(lct_run out_dir)
     OUTPUT_VARIABLE out
     ERROR_VARIABLE  err)
   message(STATUS "lct-render ${ARGN} -> ${rc}\n${out}${err}")
+  set(out "${out}" PARENT_SCOPE)
   if (rc EQUAL 125)
     message(STATUS "LCT_SKIP: no DISPLAY (run under xvfb-run -a)")
     set(lct_skipped TRUE PARENT_SCOPE)
@@ -57,18 +66,83 @@ function(lct_expect_full dir frames)
 endfunction()
 
 if (LCT_MODE STREQUAL "error")
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  set(command "${LCT_RENDER}" --out "${LCT_OUT}")
+  if (LCT_SETUP STREQUAL "dir-in-the-way")
+    file(MAKE_DIRECTORY "${LCT_OUT}/frame_0000.png")
+  elseif (LCT_SETUP STREQUAL "out-is-file")
+    get_filename_component(parent "${LCT_OUT}" DIRECTORY)
+    file(MAKE_DIRECTORY "${parent}")
+    file(WRITE "${LCT_OUT}" "a file, not a directory\n")
+  elseif (LCT_SETUP MATCHES "^many-keys=([0-9]+)(:compare)?$")
+    # Written here rather than kept in the repository: it is large and all alike.
+    set(n "${CMAKE_MATCH_1}")
+    set(compare "${CMAKE_MATCH_2}")
+    math(EXPR last "${n} - 1")
+    set(json "{\"camera\": {\"keys\": [\n")
+    foreach (i RANGE ${last})
+      string(APPEND json "{\"time\": ${i}, \"position\": [5, 3, 6], \"focal_point\": [0, 0, 0]},\n")
+    endforeach ()
+    string(REGEX REPLACE ",\n$" "\n]}}\n" json "${json}")
+    file(WRITE "${LCT_OUT}/many.json" "${json}")
+    list(APPEND command "${LCT_OUT}/many.json")
+    if (compare)
+      list(APPEND command --compare)
+    endif ()
+  endif ()
+  if (LCT_FSIZE)
+    # The limit applies to lct-render alone, through a shell that then execs it.
+    set(command sh -c "ulimit -f ${LCT_FSIZE} && exec \"$0\" \"$@\"" ${command})
+  endif ()
+  if (LCT_ENV)
+    set(command "${CMAKE_COMMAND}" -E env "${LCT_ENV}" ${command})
+  endif ()
   execute_process(
-    COMMAND "${LCT_RENDER}" --out "${LCT_OUT}" ${LCT_ARGS}
+    COMMAND ${command} ${LCT_ARGS}
     RESULT_VARIABLE rc
     OUTPUT_VARIABLE out
     ERROR_VARIABLE  err)
   message(STATUS "exit ${rc}, stderr: ${err}")
-  if (NOT rc EQUAL 1)
-    message(FATAL_ERROR "expected exit code 1, got ${rc}")
+  if (rc EQUAL 125)
+    message(STATUS "LCT_SKIP: no DISPLAY (run under xvfb-run -a)")
+    return()
+  endif ()
+  if (NOT DEFINED LCT_EXIT)
+    set(LCT_EXIT 1)
+  endif ()
+  if (NOT rc STREQUAL "${LCT_EXIT}")
+    message(FATAL_ERROR "expected exit code ${LCT_EXIT}, got ${rc}")
   endif ()
   string(FIND "${err}" "${LCT_EXPECT}" at)
   if (at EQUAL -1)
     message(FATAL_ERROR "stderr does not contain \"${LCT_EXPECT}\"")
+  endif ()
+  if (IS_DIRECTORY "${LCT_OUT}")
+    file(GLOB leftovers "${LCT_OUT}/.*")
+    if (leftovers)
+      message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+    endif ()
+    if (NOT LCT_SETUP AND NOT LCT_FSIZE)
+      file(GLOB written "${LCT_OUT}/*")
+      if (written)
+        message(FATAL_ERROR "a failed run wrote: ${written}")
+      endif ()
+    endif ()
+  endif ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "metric")
+  # A slice of a run of very many frames: the metric samples a fixed number of cameras, so this
+  # takes the time of one frame (the test's TIMEOUT holds it to that).
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  lct_run("${LCT_OUT}" ${LCT_ARGS})
+  if (lct_skipped)
+    return()
+  endif ()
+  string(FIND "${out}" "${LCT_EXPECT}" at)
+  if (at EQUAL -1)
+    message(FATAL_ERROR "stdout does not contain \"${LCT_EXPECT}\"")
   endif ()
   return()
 endif ()
