@@ -2,6 +2,7 @@
 
 #include "lct/CameraKey.h"
 #include "lct/Curves.h"
+#include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
 
@@ -9,7 +10,9 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 vtkStandardNewMacro(vtkCameraInterpolatorLCT);
@@ -67,35 +70,25 @@ struct Key
 };
 } // namespace
 
-/// The keys and the logs of their orientations, updated together whenever the keys change.
-/// Only the orientation of the focal frame goes through the key logs: its translation, the focal
-/// point, is interpolated linearly (combining whole rigid frames in Polar coordinates would move a
-/// focal point that the keys share). Rotations always have logs, so updates cannot fail.
+/// The keys and the logs of their orientations. Only the orientation of the focal frame goes
+/// through the key logs: its translation, the focal point, is interpolated linearly (combining
+/// whole rigid frames in Polar coordinates would move a focal point that the keys share).
+/// Rotations always have logs, so those updates cannot fail. Edits change the keys in O(log n)
+/// and mark the logs stale (appends and replacements update current logs in place); the first
+/// evaluation after that rebuilds them, under a mutex, so that evaluations may run concurrently
+/// once the keys stop changing.
 struct vtkCameraInterpolatorLCT::Internals
 {
   lct::Keyframes<Key> Keys;
+  std::mutex Mutex;
+  std::atomic<bool> OrientationsCurrent{ true };
   lct::KeyLogs Orientations;
   /// Logs of the camera matrices (MatrixLog), built on the first CameraMatrix evaluation after a
   /// change, and why they are missing if they are.
-  bool CameraMatricesCurrent = false;
+  std::atomic<bool> CameraMatricesCurrent{ false };
   lct::KeyLogs CameraMatrices{ lct::Parametrisation::MatrixLog };
   lct::Status CameraMatricesStatus = lct::Status::Ok;
-
-  const lct::KeyLogs& CameraMatrixLogs()
-  {
-    if (!this->CameraMatricesCurrent)
-    {
-      std::vector<Eigen::Matrix4d> matrices;
-      for (size_t i = 0; i < this->Keys.size(); ++i)
-      {
-        matrices.push_back(this->Keys[i].CameraMatrix);
-      }
-      this->CameraMatricesStatus =
-        this->CameraMatrices.build(matrices, lct::Parametrisation::MatrixLog, true);
-      this->CameraMatricesCurrent = true;
-    }
-    return this->CameraMatrices;
-  }
+  std::atomic<bool> ClampReported{ false };
 
   static Eigen::Matrix4d Orientation(const Key& key)
   {
@@ -104,29 +97,81 @@ struct vtkCameraInterpolatorLCT::Internals
     return m;
   }
 
-  void KeysChanged() { this->CameraMatricesCurrent = false; }
+  static std::vector<Eigen::Matrix4d> Matrices(
+    const lct::Keyframes<Key>& keys, Eigen::Matrix4d (*of)(const Key&))
+  {
+    std::vector<Eigen::Matrix4d> out;
+    out.reserve(keys.size());
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+      out.push_back(of(keys[i]));
+    }
+    return out;
+  }
+
+  const lct::KeyLogs& OrientationLogs()
+  {
+    if (!this->OrientationsCurrent.load(std::memory_order_acquire))
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->OrientationsCurrent.load(std::memory_order_relaxed))
+      {
+        this->Keys.flatten();
+        this->Orientations.build(
+          Matrices(this->Keys, &Orientation), lct::Parametrisation::Polar, false);
+        this->OrientationsCurrent.store(true, std::memory_order_release);
+      }
+    }
+    return this->Orientations;
+  }
+
+  const lct::KeyLogs& CameraMatrixLogs()
+  {
+    this->OrientationLogs(); // flattens the keys
+    if (!this->CameraMatricesCurrent.load(std::memory_order_acquire))
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->CameraMatricesCurrent.load(std::memory_order_relaxed))
+      {
+        this->CameraMatricesStatus = this->CameraMatrices.build(
+          Matrices(this->Keys, [](const Key& k) -> Eigen::Matrix4d { return k.CameraMatrix; }),
+          lct::Parametrisation::MatrixLog, true);
+        this->CameraMatricesCurrent.store(true, std::memory_order_release);
+      }
+    }
+    return this->CameraMatrices;
+  }
 
   void Add(const Key& key)
   {
-    const int index = this->Keys.position(key.Time);
-    if (this->Keys.find(key.Time) == index)
+    const bool replaces = this->Keys.find(key.Time) != nullptr;
+    const bool append = this->Keys.isAppend(key.Time);
+    bool current = false;
+    if (this->OrientationsCurrent && (append || replaces))
     {
-      this->Orientations.replace(index, Orientation(key), false);
-      this->Keys.replace(index, key);
+      this->Keys.flatten();
+      const int index = replaces ? this->Keys.index(key.Time) : static_cast<int>(this->Keys.size());
+      current =
+        (replaces ? this->Orientations.replace(index, Orientation(key), false)
+                  : this->Orientations.insert(index, Orientation(key), false)) == lct::Status::Ok;
     }
-    else
-    {
-      this->Orientations.insert(index, Orientation(key), false);
-      this->Keys.insert(index, key);
-    }
-    this->KeysChanged();
+    this->Keys.set(key);
+    this->OrientationsCurrent = current;
+    this->CameraMatricesCurrent = false;
   }
 
-  void Remove(int index)
+  void Remove(double t)
   {
-    this->Orientations.erase(index, false);
-    this->Keys.erase(index);
-    this->KeysChanged();
+    this->Keys.erase(t);
+    this->OrientationsCurrent = false;
+    this->CameraMatricesCurrent = false;
+  }
+
+  /// A key at another time than t, if any (all keys share one projection type).
+  const Key* Other(double t) const
+  {
+    const Key* before = this->Keys.before(t);
+    return before ? before : this->Keys.after(t);
   }
 };
 
@@ -163,9 +208,11 @@ double vtkCameraInterpolatorLCT::GetMaximumT()
 //------------------------------------------------------------------------------
 void vtkCameraInterpolatorLCT::Initialize()
 {
-  this->Internal->Keys.clear();
-  this->Internal->Orientations = lct::KeyLogs();
-  this->Internal->KeysChanged();
+  Internals& in = *this->Internal;
+  in.Keys.clear();
+  in.Orientations = lct::KeyLogs();
+  in.OrientationsCurrent = true;
+  in.CameraMatricesCurrent = false;
   this->Modified();
 }
 
@@ -182,32 +229,26 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
     vtkErrorMacro(<< "AddCamera: the key time " << t << " is not finite; key rejected.");
     return 0;
   }
-  const auto key = lct::toCameraKey(fromVtk(camera));
+  const char* why = "";
+  const auto key = lct::toCameraKey(fromVtk(camera), &why);
   if (!key)
   {
-    vtkErrorMacro(<< "AddCamera at t = " << t << ": "
-                  << (key.status == lct::Status::NonFinite
-                         ? "the camera has NaN or Inf parameters"
-                         : "degenerate camera (position at the focal point, view-up parallel to "
-                           "the view direction, view angle outside (0, 180), parallel scale <= 0 "
-                           "or clipping range not 0 < near < far)")
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << why
                   << "; key rejected.");
     return 0;
   }
-  for (size_t i = 0; i < this->Internal->Keys.size(); ++i)
+  const Key* other = this->Internal->Other(t);
+  if (other && other->Camera.parallelProjection != key.value.parallelProjection)
   {
-    const Key& other = this->Internal->Keys[i];
-    if (other.Time != t && other.Camera.parallelProjection != key.value.parallelProjection)
-    {
-      vtkErrorMacro(<< "AddCamera at t = " << t << ": a "
-                    << (key.value.parallelProjection ? "parallel" : "perspective")
-                    << " key cannot be mixed with "
-                    << (other.Camera.parallelProjection ? "parallel" : "perspective")
-                    << " keys; key rejected.");
-      return 0;
-    }
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": a "
+                  << (key.value.parallelProjection ? "parallel" : "perspective")
+                  << " key cannot be mixed with "
+                  << (other->Camera.parallelProjection ? "parallel" : "perspective")
+                  << " keys; key rejected.");
+    return 0;
   }
-  this->Internal->Add(Key{ t, key.value, lct::cameraMatrix(lct::fromCameraKey(key.value)) });
+  const auto parameters = lct::fromCameraKey(key.value);
+  this->Internal->Add(Key{ t, key.value, lct::cameraMatrix(parameters.value) });
   this->Modified();
   return 1;
 }
@@ -215,12 +256,11 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
 //------------------------------------------------------------------------------
 void vtkCameraInterpolatorLCT::RemoveCamera(double t)
 {
-  const int index = this->Internal->Keys.find(t);
-  if (index < 0)
+  if (!this->Internal->Keys.find(t))
   {
     return;
   }
-  this->Internal->Remove(index);
+  this->Internal->Remove(t);
   this->Modified();
 }
 
@@ -229,24 +269,33 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
 {
   Internals& in = *this->Internal;
   const int n = static_cast<int>(in.Keys.size());
-  if (!camera || n == 0 || std::isnan(t))
+  if (!camera || n == 0 || !std::isfinite(t))
   {
     vtkErrorMacro(<< "InterpolateCamera: "
-                  << (!camera     ? "null camera"
-                         : n == 0 ? "no keys"
-                                  : "t is NaN")
+                  << (!camera            ? "null camera"
+                         : n == 0        ? "no keys"
+                         : std::isnan(t) ? "t is NaN"
+                                         : "t is infinite")
                   << "; camera unchanged.");
     return 0;
   }
+  if ((t < in.Keys.minimumTime() || t > in.Keys.maximumTime()) && !in.ClampReported.exchange(true))
+  {
+    vtkWarningMacro(<< "InterpolateCamera: t = " << lct::formatNumber(t)
+                    << " is outside the key times [" << lct::formatNumber(in.Keys.minimumTime())
+                    << ", " << lct::formatNumber(in.Keys.maximumTime())
+                    << "]: clamped, as vtkCameraInterpolator does (reported once).");
+  }
+  const lct::KeyLogs& orientations = in.OrientationLogs();
   const lct::CurveWeights w =
     lct::curveWeights(toScheme(this->InterpolationType), in.Keys.times().data(), n, t);
   lct::CameraKey key;
   const lct::Status status = this->ConsistentRotation
-    ? in.Orientations.combineAbsolute(w, key.focalFrame)
-    : in.Orientations.combineRelative(w, key.focalFrame);
+    ? orientations.combineAbsolute(w, key.focalFrame)
+    : orientations.combineRelative(w, key.focalFrame);
   if (status != lct::Status::Ok)
   {
-    vtkErrorMacro(<< "InterpolateCamera(" << t << "): " << lct::describe(status)
+    vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "): " << lct::describe(status)
                   << "; camera unchanged.");
     return 0;
   }
@@ -260,7 +309,15 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
   }
   key.focalFrame.topRightCorner<3, 1>() = focalPoint;
   key.parallelProjection = in.Keys[0].Camera.parallelProjection;
-  lct::CameraParameters result = lct::fromCameraKey(key);
+  const char* why = "";
+  const auto interpolated = lct::fromCameraKey(key, &why);
+  if (!interpolated)
+  {
+    vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "): " << why
+                  << " (a spline overshoot between extreme keys?); camera unchanged.");
+    return 0;
+  }
+  lct::CameraParameters result = interpolated.value;
   if (this->Method == METHOD_CAMERA_MATRIX)
   {
     const lct::KeyLogs& logs = in.CameraMatrixLogs();
@@ -275,7 +332,7 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
       : lct::Result<lct::CameraParameters>::failure(matrixStatus);
     if (!fromMatrix)
     {
-      vtkErrorMacro(<< "InterpolateCamera(" << t << "), CameraMatrix method: "
+      vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "), CameraMatrix method: "
                     << lct::describe(fromMatrix.status) << "; camera unchanged.");
       return 0;
     }

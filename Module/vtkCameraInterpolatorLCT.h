@@ -24,12 +24,22 @@
  * reset: call vtkRenderer::ResetCameraClippingRange() after InterpolateCamera to refit it to the
  * scene.
  *
- * Keys are copied when added and decomposed once. Bad keys are rejected with vtkErrorMacro and
- * leave the interpolator unchanged (AddCamera returns 0): NaN/Inf, position at the focal point,
- * view-up parallel to the view direction, view angle outside (0, 180), parallel scale <= 0, an
- * invalid clipping range, or a key whose projection (parallel / perspective) differs from the
- * keys already present. InterpolateCamera returns 0 and leaves the camera untouched when there is
- * no key or t is NaN; t is clamped to [GetMinimumT(), GetMaximumT()] as in VTK.
+ * Keys are copied when added and decomposed once; loading n keys in any order costs
+ * O(n log n). Bad keys are rejected with a vtkErrorMacro naming the one condition that failed,
+ * and leave the interpolator unchanged (AddCamera returns 0): NaN/Inf, coordinates beyond 1e150
+ * (vtkCamera squares distances), position at the focal point, view-up zero or parallel to the
+ * view direction, view angle outside (0, 180), parallel scale <= 0, an invalid clipping range,
+ * or a key whose projection (parallel / perspective) differs from the keys already present.
+ * InterpolateCamera returns 0 and leaves the camera untouched when there is no key, t is NaN or
+ * infinite, or the interpolated camera is out of vtkCamera's range (a spline overshoot between
+ * extreme keys overflowing the distance, scale or far plane): no NaN or Inf is ever written. A
+ * finite t is clamped to [GetMinimumT(), GetMaximumT()] as in VTK, with one vtkWarningMacro per
+ * interpolator so the clamp is not silent.
+ *
+ * Concurrency: once the keys and settings no longer change, InterpolateCamera may be called from
+ * several threads at once on one interpolator, each with its own output camera (the key logs
+ * rebuilt lazily are built once, under a mutex; Testing/Unit/TestConcurrency.cxx, run under
+ * ThreadSanitizer). Changing keys or settings while another thread interpolates is a data race.
  *
  * @warning Derives from vtkObject, not from vtkCameraInterpolator: VTK 9.1 declares that class's
  * methods non-virtual, so a subclass would be silently bypassed through a base pointer.

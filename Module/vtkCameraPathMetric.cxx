@@ -10,6 +10,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkCameraPathMetric);
@@ -43,26 +44,50 @@ vtkPoints* vtkCameraPathMetric::GetPoints()
 }
 
 //------------------------------------------------------------------------------
-int vtkCameraPathMetric::Measure(const std::vector<vtkCamera*>& cameras)
+void vtkCameraPathMetric::Sample(vtkCamera* camera)
 {
-  if (!this->Points || this->Points->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro(<< "no points to measure; results unchanged.");
-    return 0;
-  }
-  std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> views, projections;
-  for (vtkCamera* camera : cameras)
-  {
-    views.push_back(toEigen(camera->GetViewTransformMatrix()));
-    projections.push_back(
-      toEigen(camera->GetCompositeProjectionTransformMatrix(this->Aspect, -1.0, 1.0)));
-  }
+  this->Views.push_back(toEigen(camera->GetViewTransformMatrix()));
+  this->Projections.push_back(
+    toEigen(camera->GetCompositeProjectionTransformMatrix(this->Aspect, -1.0, 1.0)));
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraPathMetric::Measure()
+{
   std::vector<Eigen::Vector3d> points(this->Points->GetNumberOfPoints());
   for (vtkIdType i = 0; i < this->Points->GetNumberOfPoints(); ++i)
   {
     this->Points->GetPoint(i, points[i].data());
+    if (!points[i].allFinite())
+    {
+      vtkErrorMacro(<< "point " << i << " is NaN or Inf; results unchanged.");
+      return 0;
+    }
   }
-  const lct::PathMetricResult r = lct::measurePath(views, projections, points);
+  for (size_t s = 0; s < this->Views.size(); ++s)
+  {
+    if (!this->Views[s].allFinite() || !this->Projections[s].allFinite())
+    {
+      vtkErrorMacro(<< "camera sample " << s << " has a NaN or Inf matrix; results unchanged.");
+      return 0;
+    }
+  }
+  const lct::PathMetricResult r = lct::measurePath(this->Views, this->Projections, points);
+  if (r.closedCamera > 0 || r.closedScreen > 0)
+  {
+    vtkErrorMacro(<< "the path is closed for " << std::max(r.closedCamera, r.closedScreen) << " of "
+                  << points.size() << " points: they move but end where they started "
+                  << (r.closedCamera > 0 ? "in camera space" : "on the screen")
+                  << " (e.g. a full orbit), so their excess over a zero chord is unbounded; "
+                  << "measure an open part of the path. Results unchanged.");
+    return 0;
+  }
+  if (r.pointsMeasuredScreen == 0)
+  {
+    vtkErrorMacro(<< "no point stays in front of the camera over the whole path: the screen-space "
+                  << "excess is undefined. Results unchanged.");
+    return 0;
+  }
   if (!std::isfinite(r.cameraSpaceExcess) || !std::isfinite(r.screenSpaceExcess))
   {
     vtkErrorMacro(<< "the path gives non-finite path lengths; results unchanged.");
@@ -88,47 +113,57 @@ int vtkCameraPathMetric::EvaluateInterpolator(vtkCameraInterpolatorLCT* path, do
     vtkErrorMacro(<< "EvaluateInterpolator: null path or non-finite times; results unchanged.");
     return 0;
   }
-  std::vector<vtkSmartPointer<vtkCamera>> owned;
-  std::vector<vtkCamera*> cameras;
+  if (!this->Points || this->Points->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "EvaluateInterpolator: no points to measure; results unchanged.");
+    return 0;
+  }
+  this->Views.clear();
+  this->Projections.clear();
+  vtkNew<vtkCamera> camera; // one camera, re-used: memory does not grow with the samples
   for (int k = 0; k < this->NumberOfSamples; ++k)
   {
-    owned.push_back(vtkSmartPointer<vtkCamera>::New());
     const double t = t0 + (t1 - t0) * k / (this->NumberOfSamples - 1);
-    if (!path->InterpolateCamera(t, owned.back()))
+    if (!path->InterpolateCamera(t, camera))
     {
       vtkErrorMacro(<< "EvaluateInterpolator: the path failed at t = " << t
                     << "; results unchanged.");
       return 0;
     }
-    cameras.push_back(owned.back());
+    this->Sample(camera);
   }
-  return this->Measure(cameras);
+  return this->Measure();
 }
 
 //------------------------------------------------------------------------------
 int vtkCameraPathMetric::EvaluateCameras(vtkCollection* collection)
 {
-  std::vector<vtkCamera*> cameras;
-  if (collection)
+  if (!this->Points || this->Points->GetNumberOfPoints() == 0)
   {
-    for (int i = 0; i < collection->GetNumberOfItems(); ++i)
-    {
-      vtkCamera* camera = vtkCamera::SafeDownCast(collection->GetItemAsObject(i));
-      if (!camera)
-      {
-        vtkErrorMacro(<< "EvaluateCameras: item " << i << " is not a vtkCamera; results "
-                      << "unchanged.");
-        return 0;
-      }
-      cameras.push_back(camera);
-    }
-  }
-  if (cameras.size() < 2)
-  {
-    vtkErrorMacro(<< "EvaluateCameras: at least two cameras are needed; results unchanged.");
+    vtkErrorMacro(<< "EvaluateCameras: no points to measure; results unchanged.");
     return 0;
   }
-  return this->Measure(cameras);
+  const int count = collection ? collection->GetNumberOfItems() : 0;
+  if (count < 2 || count > 100000)
+  {
+    vtkErrorMacro(<< "EvaluateCameras: " << count
+                  << " cameras; 2 to 100000 are needed; results unchanged.");
+    return 0;
+  }
+  this->Views.clear();
+  this->Projections.clear();
+  for (int i = 0; i < count; ++i)
+  {
+    vtkCamera* camera = vtkCamera::SafeDownCast(collection->GetItemAsObject(i));
+    if (!camera)
+    {
+      vtkErrorMacro(<< "EvaluateCameras: item " << i << " is not a vtkCamera; results "
+                    << "unchanged.");
+      return 0;
+    }
+    this->Sample(camera);
+  }
+  return this->Measure();
 }
 
 //------------------------------------------------------------------------------

@@ -25,6 +25,9 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For the points
 
+#include <Eigen/Core>      // For the sampled matrices
+#include <Eigen/StdVector> // For the sampled matrices
+
 #include <vector> // For the per-point flags
 
 class vtkCamera;
@@ -57,21 +60,25 @@ public:
 
   ///@{
   /**
-   * Number of samples EvaluateInterpolator takes, both ends included. Default 11.
+   * Number of samples EvaluateInterpolator takes, both ends included. Default 11, at most
+   * 100000 (the samples' matrices are kept: 256 bytes each).
    */
-  vtkSetClampMacro(NumberOfSamples, int, 2, 1000000);
+  vtkSetClampMacro(NumberOfSamples, int, 2, 100000);
   vtkGetMacro(NumberOfSamples, int);
   ///@}
 
   /**
    * Measure the path of `path` over [t0, t1]. Returns 1 on success, 0 (with an error, results
-   * unchanged) without points, with a null path or non-finite times, or if the path fails.
+   * unchanged) without points, with a NaN/Inf point, a null path or non-finite times, if the
+   * path fails, or when the excess is undefined: no point has a measurable chord between the
+   * first and last samples (a closed path such as a full orbit, or points that do not move).
    */
   int EvaluateInterpolator(vtkCameraInterpolatorLCT* path, double t0, double t1);
 
   /**
-   * Measure the path given by the vtkCamera items of `cameras`, in order (at least two).
-   * Returns 1 on success, 0 (with an error, results unchanged) otherwise.
+   * Measure the path given by the vtkCamera items of `cameras`, in order (at least two, at most
+   * 100000). Returns 1 on success, 0 (with an error, results unchanged) otherwise, for the same
+   * reasons as EvaluateInterpolator.
    */
   int EvaluateCameras(vtkCollection* cameras);
 
@@ -100,7 +107,11 @@ private:
   vtkCameraPathMetric(const vtkCameraPathMetric&) = delete;
   void operator=(const vtkCameraPathMetric&) = delete;
 
-  int Measure(const std::vector<vtkCamera*>& cameras);
+  /// Appends the view and composite projection matrices of `camera`.
+  void Sample(vtkCamera* camera);
+  int Measure();
+
+  std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> Views, Projections;
 
   vtkSmartPointer<vtkPoints> Points;
   std::vector<char> LeftView;

@@ -2,6 +2,7 @@
 
 #include "lct/Affine.h"
 #include "lct/Combination.h"
+#include "lct/Format.h"
 #include "lct/Parametrisation.h"
 
 #include "vtkCollection.h"
@@ -9,6 +10,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 vtkStandardNewMacro(vtkLogTransform);
@@ -19,6 +22,15 @@ lct::Parametrisation toCore(int parametrisation)
 {
   return parametrisation == vtkLogTransform::MATRIX_LOG ? lct::Parametrisation::MatrixLog
                                                         : lct::Parametrisation::Polar;
+}
+
+/// Advice for a failure that the other parametrisation would not have.
+const char* advice(lct::Status status, int parametrisation)
+{
+  return status == lct::Status::NoRealLogarithm && parametrisation == vtkLogTransform::MATRIX_LOG
+    ? " (the Polar parametrisation, SetParametrisationToPolar(), has coordinates for every "
+      "orientation-preserving map)"
+    : "";
 }
 
 Eigen::Matrix4d toEigen(const double elements[16])
@@ -56,8 +68,21 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
   const auto matrix = lct::exponential(c, toCore(parametrisation));
   if (!matrix)
   {
-    vtkErrorMacro(<< caller << ": the resulting transform is not finite ("
-                  << lct::describe(matrix.status) << "); unchanged.");
+    vtkErrorMacro(<< caller << ": the resulting transform is not representable: "
+                  << lct::describe(matrix.status) << "; unchanged.");
+    return false;
+  }
+  // Every state can also be inverted (Inverse(), GetInverse()): the inverse must be finite and
+  // its smallest stretch 1 / sigma_max normal, which ||A||_F < 1 / DBL_MIN guarantees.
+  const Eigen::Matrix3d linear = matrix.value.topLeftCorner<3, 3>();
+  const double largest = linear.cwiseAbs().maxCoeff();
+  const bool invertible = lct::inverseAffine(matrix.value).allFinite() &&
+    largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min();
+  if (!invertible)
+  {
+    vtkErrorMacro(<< caller << ": the inverse of the resulting transform overflows double "
+                  << "precision (a vtkLogTransform only holds maps it can also invert); "
+                  << "unchanged.");
     return false;
   }
   this->Internal->Coordinates = c;
@@ -140,7 +165,8 @@ int vtkLogTransform::SetMatrixNear(const double elements[16], const double* refe
     toEigen(elements), toCore(this->Parametrisation), reference ? &referenceCoordinates : nullptr);
   if (!c)
   {
-    vtkErrorMacro(<< "SetMatrix: " << lct::describe(c.status) << "; unchanged.");
+    vtkErrorMacro(<< "SetMatrix: " << lct::describe(c.status)
+                  << advice(c.status, this->Parametrisation) << "; unchanged.");
     return 0;
   }
   return this->Commit(c.value.data(), this->Parametrisation, "SetMatrix") ? 1 : 0;
@@ -199,6 +225,12 @@ int vtkLogTransform::Scale(double s)
     return 0;
   }
   const lct::LogCoords scaled = s * this->Internal->Coordinates;
+  if (!scaled.allFinite())
+  {
+    vtkErrorMacro(<< "Scale: " << lct::formatNumber(s)
+                  << " times the coordinates overflows; unchanged.");
+    return 0;
+  }
   if (!this->Commit(scaled.data(), this->Parametrisation, "Scale"))
   {
     return 0;
@@ -254,12 +286,19 @@ int vtkLogTransform::LinearCombination(
     const auto c = lct::logarithm(t->Internal->Matrix, toCore(parametrisation));
     if (!c)
     {
-      vtkErrorWithObjectMacro(result,
-        << "LinearCombination: transform " << i << " has no " << lct::name(toCore(parametrisation))
-        << " coordinates: " << lct::describe(c.status) << "; result unchanged.");
+      vtkErrorWithObjectMacro(
+        result, << "LinearCombination: transform " << i << " has no "
+                << lct::name(toCore(parametrisation)) << " coordinates: " << lct::describe(c.status)
+                << advice(c.status, parametrisation) << "; result unchanged.");
       return 0;
     }
     sum += weights[i] * c.value;
+  }
+  if (!sum.allFinite())
+  {
+    vtkErrorWithObjectMacro(result, << "LinearCombination: the weighted sum of the coordinates "
+                                       "overflows; result unchanged.");
+    return 0;
   }
   if (!result->Commit(sum.data(), parametrisation, "LinearCombination"))
   {
@@ -344,6 +383,25 @@ void vtkLogTransform::Inverse()
     return;
   }
   this->Commit(c.value.data(), this->Parametrisation, "Inverse");
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::DeepCopy(vtkAbstractTransform* transform)
+{
+  // vtkAbstractTransform::DeepCopy dereferences its argument unchecked.
+  if (!transform)
+  {
+    vtkErrorMacro(<< "DeepCopy: null transform; unchanged.");
+    return;
+  }
+  if (transform != this && !vtkLogTransform::SafeDownCast(transform))
+  {
+    vtkErrorMacro(<< "DeepCopy: a " << transform->GetClassName()
+                  << " is not a vtkLogTransform (use SetTransform() for any linear transform); "
+                  << "unchanged.");
+    return;
+  }
+  this->Superclass::DeepCopy(transform);
 }
 
 //------------------------------------------------------------------------------

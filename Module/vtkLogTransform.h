@@ -27,9 +27,12 @@
  *   real eigenvalue (e.g. a half turn combined with non-uniform scale) are rejected.
  *
  * Every setter validates its input. NaN/Inf, a bottom row other than (0, 0, 0, 1), a
- * determinant <= 0, a numerically singular map, or (MatrixLog) a map without real
- * logarithm is reported with vtkErrorMacro; the method returns 0 and the object keeps its
- * previous state (and MTime). Methods that succeed return 1 and call Modified().
+ * negative determinant, a singular map, a condition number above 1e13 (lct/Conditioning.h), a
+ * subnormal stretch, (MatrixLog) a map without real logarithm or with eigenvalue magnitudes
+ * beyond 1e+-135, and results that overflow, or whose inverse would, are reported with a
+ * vtkErrorMacro naming the cause; the method returns 0 and the object keeps its previous state
+ * (and MTime). Methods that succeed return 1 and call Modified(). So every state has a finite
+ * matrix and a finite inverse: Inverse() and GetInverse() always succeed.
  *
  * Rotations: the rotation part is the principal one (angle <= 180 degrees) unless a
  * reference is given to SetMatrix(), in which case the equivalent rotation vector nearest to
@@ -146,6 +149,14 @@ public:
    * coordinates of the inverse map are recomputed (with the rotation branch kept).
    */
   void Inverse() override;
+
+  /**
+   * Copy another vtkLogTransform (state, parametrisation). Unlike vtkAbstractTransform::DeepCopy,
+   * which dereferences its argument unchecked, a null or non-vtkLogTransform argument is
+   * reported with an error and leaves this object unchanged (call through a vtkLogTransform
+   * pointer: the base method is not virtual).
+   */
+  void DeepCopy(vtkAbstractTransform* transform);
 
   vtkAbstractTransform* MakeTransform() override;
 

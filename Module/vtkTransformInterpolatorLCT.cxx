@@ -2,9 +2,11 @@
 
 #include "lct/Affine.h"
 #include "lct/Curves.h"
+#include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
 #include "lct/Parametrisation.h"
+#include "lct/PolarParametrisation.h"
 
 #include "vtkLogTransform.h"
 #include "vtkMatrix4x4.h"
@@ -13,7 +15,9 @@
 #include "vtkTransform.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 vtkStandardNewMacro(vtkTransformInterpolatorLCT);
@@ -58,43 +62,87 @@ lct::CurveScheme toScheme(int type)
 }
 } // namespace
 
-/// The keys and the logs derived from them, updated together whenever the keys change.
+/// The keys, and the logs derived from them. Edits change the keys in O(log n) and mark the logs
+/// stale (an append or a replacement updates them in place when they are current); the first
+/// evaluation after that rebuilds them in O(n), under a mutex, so that evaluations may run
+/// concurrently once the keys stop changing.
 struct vtkTransformInterpolatorLCT::Internals
 {
   lct::Keyframes<Key> Keys;
-  /// Logs of the keys (Linear, Spline, BSpline, Subdivision), updated incrementally.
+  lct::Parametrisation P = lct::Parametrisation::Polar;
+
+  std::mutex Mutex;
+  /// Logs of the keys (Linear, Spline, BSpline, Subdivision) and why they are missing.
+  std::atomic<bool> LogsCurrent{ true };
   lct::KeyLogs KeyLogs;
+  lct::Status LogsStatus = lct::Status::Ok;
+  double LogsFailedTime = 0.0;
   /// Logs of the Bezier sequence K0, C0+, C1-, K1, ... (see lct/Curves.h), built on the first
-  /// Bezier evaluation after a change, and why they are missing if they are (MatrixLog: a
-  /// control transform without a real log), which only matters to the Bezier type.
-  bool BezierCurrent = false;
+  /// Bezier evaluation after a change, and why they are missing if they are.
+  std::atomic<bool> BezierCurrent{ false };
   lct::KeyLogs BezierLogs;
   lct::Status BezierStatus = lct::Status::Ok;
   double BezierFailedTime = 0.0;
+  /// Whether a query outside the key range has been reported (once per interpolator).
+  std::atomic<bool> ClampReported{ false };
+
+  void KeysChanged(bool logsCurrent)
+  {
+    this->LogsCurrent = logsCurrent;
+    this->BezierCurrent = false;
+  }
+
+  /// The key logs, rebuilt if stale. Null, with LogsStatus saying why, when they cannot be.
+  const lct::KeyLogs* Logs()
+  {
+    if (!this->LogsCurrent.load(std::memory_order_acquire))
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->LogsCurrent.load(std::memory_order_relaxed))
+      {
+        this->Keys.flatten();
+        std::vector<Eigen::Matrix4d> matrices;
+        matrices.reserve(this->Keys.size());
+        for (size_t i = 0; i < this->Keys.size(); ++i)
+        {
+          matrices.push_back(this->Keys[i].Matrix);
+        }
+        int failed = 0;
+        this->LogsStatus = this->KeyLogs.build(matrices, this->P, true, &failed);
+        this->LogsFailedTime = this->LogsStatus == lct::Status::Ok ? 0.0 : this->Keys[failed].Time;
+        this->LogsCurrent.store(true, std::memory_order_release);
+      }
+    }
+    return this->LogsStatus == lct::Status::Ok ? &this->KeyLogs : nullptr;
+  }
 
   /// The Bezier sequence: given control transforms, else automatic ones that put the
   /// Catmull-Rom tangent m of the logs relative to the key (in its frame) at each key:
   /// C+ = K exp(+h/3 m), C- = K exp(-h/3 m), with h the segment's duration.
-  lct::Status BezierSequence(std::vector<Eigen::Matrix4d>& out, int& failedKey) const
+  lct::Status BezierSequence(
+    const lct::KeyLogs& logs, std::vector<Eigen::Matrix4d>& out, int& failedKey) const
   {
     const int n = static_cast<int>(this->Keys.size());
-    const lct::Parametrisation p = this->KeyLogs.parametrisation();
     out.clear();
-    // Neighbours always have relative logs (the key logs require it).
-    auto tangent = [&](int k) -> lct::LogCoords {
+    auto automatic = [&](int k, double signedThird, Eigen::Matrix4d& control) {
+      failedKey = k;
       const int lo = std::max(k - 1, 0);
       const int hi = std::min(k + 1, n - 1);
-      return (*this->KeyLogs.relative(hi, k) - *this->KeyLogs.relative(lo, k)) /
-        (this->Keys.times()[hi] - this->Keys.times()[lo]);
-    };
-    auto automatic = [&](int k, double signedThird, Eigen::Matrix4d& control) {
-      const auto c = lct::exponential(signedThird * tangent(k), p);
-      if (c)
+      const lct::LogCoords* forward = logs.relative(hi, k);
+      const lct::LogCoords* backward = logs.relative(lo, k);
+      if (!forward || !backward)
       {
-        control = this->Keys[k].Matrix * c.value;
+        return !forward ? logs.relativeStatus(hi, k) : logs.relativeStatus(lo, k);
       }
-      failedKey = k;
-      return c.status;
+      const lct::LogCoords tangent =
+        (*forward - *backward) / (this->Keys.times()[hi] - this->Keys.times()[lo]);
+      const auto c = lct::exponential(signedThird * tangent, this->P);
+      if (!c)
+      {
+        return c.status;
+      }
+      control = this->Keys[k].Matrix * c.value;
+      return control.allFinite() ? lct::Status::Ok : lct::Status::OutOfRange;
     };
     for (int k = 0; k < n; ++k)
     {
@@ -131,82 +179,141 @@ struct vtkTransformInterpolatorLCT::Internals
     return lct::Status::Ok;
   }
 
-  /// The Bezier logs, built if the keys changed since the last call.
-  const lct::KeyLogs& Bezier()
+  /// The Bezier logs, built if the keys changed since. Null, with BezierStatus saying why, when
+  /// they cannot be.
+  const lct::KeyLogs* Bezier()
   {
-    if (!this->BezierCurrent)
+    const lct::KeyLogs* logs = this->Logs();
+    if (!logs)
     {
-      std::vector<Eigen::Matrix4d> sequence;
-      int failed = 0;
-      this->BezierStatus = this->BezierSequence(sequence, failed);
-      if (this->BezierStatus == lct::Status::Ok)
-      {
-        this->BezierStatus =
-          this->BezierLogs.build(sequence, this->KeyLogs.parametrisation(), false, &failed);
-        failed = (failed + 1) / 3;
-      }
-      this->BezierFailedTime =
-        this->Keys.empty() ? 0.0 : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
-      this->BezierCurrent = true;
+      this->BezierStatus = this->LogsStatus;
+      this->BezierFailedTime = this->LogsFailedTime;
+      return nullptr;
     }
-    return this->BezierLogs;
+    if (!this->BezierCurrent.load(std::memory_order_acquire))
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->BezierCurrent.load(std::memory_order_relaxed))
+      {
+        std::vector<Eigen::Matrix4d> sequence;
+        int failed = 0;
+        this->BezierStatus = this->BezierSequence(*logs, sequence, failed);
+        if (this->BezierStatus == lct::Status::Ok)
+        {
+          this->BezierStatus = this->BezierLogs.build(sequence, this->P, false, &failed);
+          failed = (failed + 1) / 3;
+        }
+        this->BezierFailedTime = this->Keys.empty()
+          ? 0.0
+          : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
+        this->BezierCurrent.store(true, std::memory_order_release);
+      }
+    }
+    return this->BezierStatus == lct::Status::Ok ? &this->BezierLogs : nullptr;
   }
 
-  void KeysChanged() { this->BezierCurrent = false; }
-
-  /// Adds or replaces (same time) a key. On failure nothing changes.
-  lct::Status Add(const Key& key)
+  /// Why a step from `from` to `to` cannot be interpolated in P, or Ok.
+  lct::Status StepStatus(const Eigen::Matrix4d& from, const Eigen::Matrix4d& to) const
   {
-    const int index = this->Keys.position(key.Time);
-    const bool replaces = this->Keys.find(key.Time) == index;
-    const lct::Status status = replaces ? this->KeyLogs.replace(index, key.Matrix, true)
-                                        : this->KeyLogs.insert(index, key.Matrix, true);
-    if (status == lct::Status::Ok)
+    const Eigen::Matrix4d step = lct::inverseAffine(from) * to;
+    if (!step.allFinite())
     {
-      if (replaces)
-      {
-        this->Keys.replace(index, key);
-      }
-      else
-      {
-        this->Keys.insert(index, key);
-      }
-      this->KeysChanged();
+      return lct::Status::OutOfRange;
     }
-    return status;
+    return lct::logarithm(step, this->P).status;
   }
 
-  /// Removes the key at `index`. On failure nothing changes.
-  lct::Status Remove(int index)
+  /// Adds or replaces (same time) a key whose own validity was checked; `neighbourTime`
+  /// receives the time of a neighbour the key cannot be joined to. On failure nothing changes.
+  lct::Status Add(const Key& key, double& neighbourTime)
   {
-    const lct::Status status = this->KeyLogs.erase(index, true);
-    if (status == lct::Status::Ok)
+    for (const Key* neighbour : { this->Keys.before(key.Time), this->Keys.after(key.Time) })
     {
-      this->Keys.erase(index);
-      this->KeysChanged();
+      if (neighbour)
+      {
+        const lct::Status step = neighbour->Time < key.Time
+          ? this->StepStatus(neighbour->Matrix, key.Matrix)
+          : this->StepStatus(key.Matrix, neighbour->Matrix);
+        if (step != lct::Status::Ok)
+        {
+          neighbourTime = neighbour->Time;
+          return step;
+        }
+      }
     }
-    return status;
+    const bool replaces = this->Keys.find(key.Time) != nullptr;
+    const bool append = this->Keys.isAppend(key.Time);
+    bool logsCurrent = false;
+    // An append or a replacement updates current logs in place (O(1) logs); anything else
+    // leaves them to the next evaluation's rebuild.
+    if (this->LogsCurrent && this->LogsStatus == lct::Status::Ok && (append || replaces))
+    {
+      this->Keys.flatten();
+      const int index = replaces ? this->Keys.index(key.Time) : static_cast<int>(this->Keys.size());
+      logsCurrent = (replaces ? this->KeyLogs.replace(index, key.Matrix, true)
+                              : this->KeyLogs.insert(index, key.Matrix, true)) == lct::Status::Ok;
+    }
+    this->Keys.set(key);
+    this->KeysChanged(logsCurrent);
+    return lct::Status::Ok;
+  }
+
+  /// Removes the key at time t. Fails (nothing changes) when its neighbours cannot be joined.
+  lct::Status Remove(double t)
+  {
+    const Key* before = this->Keys.before(t);
+    const Key* after = this->Keys.after(t);
+    if (before && after)
+    {
+      const lct::Status step = this->StepStatus(before->Matrix, after->Matrix);
+      if (step != lct::Status::Ok)
+      {
+        return step;
+      }
+    }
+    this->Keys.erase(t);
+    this->KeysChanged(false);
+    return lct::Status::Ok;
   }
 
   /// Recomputes every log in parametrisation p. On failure nothing changes.
   lct::Status Rebuild(lct::Parametrisation p, double& failedTime)
   {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    this->Keys.flatten();
     std::vector<Eigen::Matrix4d> matrices;
     for (size_t i = 0; i < this->Keys.size(); ++i)
     {
       matrices.push_back(this->Keys[i].Matrix);
     }
     int failed = 0;
-    const lct::Status status = this->KeyLogs.build(matrices, p, true, &failed);
+    lct::KeyLogs logs;
+    const lct::Status status = logs.build(matrices, p, true, &failed);
     if (status != lct::Status::Ok)
     {
       failedTime = this->Keys[failed].Time;
       return status;
     }
-    this->KeysChanged();
+    this->KeyLogs = std::move(logs);
+    this->P = p;
+    this->LogsStatus = lct::Status::Ok;
+    this->LogsCurrent = true;
+    this->BezierCurrent = false;
     return lct::Status::Ok;
   }
 };
+
+namespace
+{
+/// Advice for a failure that another parametrisation would not have.
+const char* advice(lct::Status status, lct::Parametrisation p)
+{
+  return status == lct::Status::NoRealLogarithm && p == lct::Parametrisation::MatrixLog
+    ? " (the Polar parametrisation, SetParametrisationToPolar(), has a logarithm for every "
+      "orientation-preserving map)"
+    : "";
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkTransformInterpolatorLCT::vtkTransformInterpolatorLCT()
@@ -241,9 +348,11 @@ double vtkTransformInterpolatorLCT::GetMaximumT()
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::Initialize()
 {
-  this->Internal->Keys.clear();
-  this->Internal->KeyLogs = lct::KeyLogs(toCore(this->Parametrisation));
-  this->Internal->KeysChanged();
+  Internals& in = *this->Internal;
+  in.Keys.clear();
+  in.KeyLogs = lct::KeyLogs(in.P);
+  in.LogsStatus = lct::Status::Ok;
+  in.KeysChanged(true);
   this->Modified();
 }
 
@@ -258,20 +367,27 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
   Key key;
   key.Time = t;
   key.Matrix = RowMajor4(Eigen::Map<const RowMajor4>(elements));
-  const lct::Status valid = lct::validateAffine(key.Matrix);
-  if (valid != lct::Status::Ok)
+  // Each key on its own first, so that a bad key is named as the cause (and never a good
+  // neighbour after it): finite, affine, det > 0, and within the conditioning and range of the
+  // core. MatrixLog keys need no absolute log: only their steps to the neighbours must have one.
+  const lct::Status own = lct::polarLog(key.Matrix).status;
+  if (own != lct::Status::Ok)
   {
-    vtkErrorMacro(<< caller << " at t = " << t << ": " << lct::describe(valid)
+    vtkErrorMacro(<< caller << " at t = " << lct::formatNumber(t) << ": " << lct::describe(own)
                   << "; key rejected.");
     return 0;
   }
   // A key at an existing time replaces it, as vtkTransformInterpolator does.
-  const lct::Status added = this->Internal->Add(key);
+  double neighbourTime = 0.0;
+  const lct::Status added = this->Internal->Add(key, neighbourTime);
   if (added != lct::Status::Ok)
   {
-    vtkErrorMacro(<< caller << " at t = " << t << ": the step between this key and a "
-                  << "neighbour has no real " << lct::name(toCore(this->Parametrisation))
-                  << " logarithm (" << lct::describe(added) << "); key rejected.");
+    const lct::Parametrisation p = this->Internal->P;
+    vtkErrorMacro(<< caller << " at t = " << lct::formatNumber(t)
+                  << ": the step between this key and the key at t = "
+                  << lct::formatNumber(neighbourTime) << " has no " << lct::name(p)
+                  << " logarithm: " << lct::describe(added) << advice(added, p)
+                  << "; key rejected.");
     return 0;
   }
   this->Modified();
@@ -315,23 +431,22 @@ int vtkTransformInterpolatorLCT::AddTransform(double t, vtkProp3D* prop3D)
 int vtkTransformInterpolatorLCT::SetBezierControls(
   double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing)
 {
-  const int index = this->Internal->Keys.find(t);
-  if (index < 0)
+  Key* key = this->Internal->Keys.find(t);
+  if (!key)
   {
-    vtkErrorMacro(<< "SetBezierControls: no key at t = " << t << "; unchanged.");
+    vtkErrorMacro(<< "SetBezierControls: no key at t = " << lct::formatNumber(t) << "; unchanged.");
     return 0;
   }
-  Key* key = &this->Internal->Keys[index];
   vtkMatrix4x4* given[2] = { incoming, outgoing };
   for (vtkMatrix4x4* m : given)
   {
     const lct::Status valid = m
-      ? lct::validateAffine(RowMajor4(Eigen::Map<const RowMajor4>(m->GetData())))
+      ? lct::polarLog(RowMajor4(Eigen::Map<const RowMajor4>(m->GetData()))).status
       : lct::Status::Ok;
     if (valid != lct::Status::Ok)
     {
-      vtkErrorMacro(<< "SetBezierControls(t = " << t << "): " << lct::describe(valid)
-                    << "; unchanged.");
+      vtkErrorMacro(<< "SetBezierControls(t = " << lct::formatNumber(t)
+                    << "): " << lct::describe(valid) << "; unchanged.");
       return 0;
     }
   }
@@ -345,7 +460,7 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
   {
     key->Outgoing = RowMajor4(Eigen::Map<const RowMajor4>(outgoing->GetData()));
   }
-  this->Internal->KeysChanged();
+  this->Internal->BezierCurrent = false;
   this->Modified();
   return 1;
 }
@@ -353,17 +468,20 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
 //------------------------------------------------------------------------------
 void vtkTransformInterpolatorLCT::RemoveTransform(double t)
 {
-  const int index = this->Internal->Keys.find(t);
-  if (index < 0)
+  if (!this->Internal->Keys.find(t))
   {
     return;
   }
-  // Removing a key cannot create a missing log in Polar; in MatrixLog its two neighbours may
-  // have none between them, so check.
-  if (this->Internal->Remove(index) != lct::Status::Ok)
+  // Removing a key makes its two neighbours adjacent: in MatrixLog (or for steps beyond the
+  // conditioning limit) they may not be joinable, so check.
+  const lct::Status removed = this->Internal->Remove(t);
+  if (removed != lct::Status::Ok)
   {
-    vtkErrorMacro(<< "RemoveTransform(" << t << "): the remaining keys have no common "
-                  << lct::name(toCore(this->Parametrisation)) << " logarithms; not removed.");
+    const lct::Parametrisation p = this->Internal->P;
+    vtkErrorMacro(<< "RemoveTransform(" << lct::formatNumber(t)
+                  << "): its two neighbours would be joined by a step without a " << lct::name(p)
+                  << " logarithm: " << lct::describe(removed) << advice(removed, p)
+                  << "; not removed.");
     return;
   }
   this->Modified();
@@ -383,12 +501,13 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
     return 1;
   }
   double failedTime = 0.0;
-  const lct::Status built = this->Internal->Rebuild(toCore(parametrisation), failedTime);
+  const lct::Parametrisation p = toCore(parametrisation);
+  const lct::Status built = this->Internal->Rebuild(p, failedTime);
   if (built != lct::Status::Ok)
   {
-    vtkErrorMacro(<< "SetParametrisation: the key at t = " << failedTime << " has no "
-                  << lct::name(toCore(parametrisation)) << " logarithm (" << lct::describe(built)
-                  << "); unchanged.");
+    vtkErrorMacro(<< "SetParametrisation: the step to the key at t = "
+                  << lct::formatNumber(failedTime) << " has no " << lct::name(p)
+                  << " logarithm: " << lct::describe(built) << "; unchanged.");
     return 0;
   }
   this->Parametrisation = parametrisation;
@@ -406,33 +525,47 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
     vtkErrorMacro(<< "InterpolateTransform: no keys; output unchanged.");
     return false;
   }
-  if (std::isnan(t))
+  if (!std::isfinite(t))
   {
-    vtkErrorMacro(<< "InterpolateTransform: t is NaN; output unchanged.");
+    vtkErrorMacro(<< "InterpolateTransform: "
+                  << (std::isnan(t) ? "t is NaN"
+                                    : (t > 0 ? "t = inf is infinite" : "t = -inf is infinite"))
+                  << "; output unchanged.");
     return false;
   }
-  const lct::CurveScheme scheme = toScheme(this->InterpolationType);
-  const lct::KeyLogs& logs = scheme == lct::CurveScheme::Bezier ? in.Bezier() : in.KeyLogs;
-  if (scheme == lct::CurveScheme::Bezier && in.BezierStatus != lct::Status::Ok)
+  if ((t < in.Keys.minimumTime() || t > in.Keys.maximumTime()) && !in.ClampReported.exchange(true))
   {
-    vtkErrorMacro(<< "InterpolateTransform(" << t << "): the Bezier control transforms near the "
-                  << "key at t = " << in.BezierFailedTime << " have no "
-                  << lct::name(toCore(this->Parametrisation)) << " logarithm ("
-                  << lct::describe(in.BezierStatus) << "); output unchanged.");
+    vtkWarningMacro(<< "InterpolateTransform: t = " << lct::formatNumber(t)
+                    << " is outside the key times [" << lct::formatNumber(in.Keys.minimumTime())
+                    << ", " << lct::formatNumber(in.Keys.maximumTime())
+                    << "]: clamped, as vtkTransformInterpolator does (reported once).");
+  }
+  const lct::CurveScheme scheme = toScheme(this->InterpolationType);
+  const lct::KeyLogs* logs = scheme == lct::CurveScheme::Bezier ? in.Bezier() : in.Logs();
+  if (!logs)
+  {
+    const bool bezier = scheme == lct::CurveScheme::Bezier;
+    vtkErrorMacro(<< "InterpolateTransform(" << lct::formatNumber(t) << "): the "
+                  << (bezier ? "Bezier control transforms near the key" : "step to the key")
+                  << " at t = "
+                  << lct::formatNumber(bezier ? in.BezierFailedTime : in.LogsFailedTime)
+                  << (bezier ? " have no " : " has no ") << lct::name(in.P)
+                  << " logarithm: " << lct::describe(bezier ? in.BezierStatus : in.LogsStatus)
+                  << advice(bezier ? in.BezierStatus : in.LogsStatus, in.P)
+                  << "; output unchanged.");
     return false;
   }
   const lct::CurveWeights w = lct::curveWeights(scheme, in.Keys.times().data(), n, t);
   Eigen::Matrix4d result;
   const lct::Status status =
-    this->ConsistentRotation ? logs.combineAbsolute(w, result) : logs.combineRelative(w, result);
+    this->ConsistentRotation ? logs->combineAbsolute(w, result) : logs->combineRelative(w, result);
   if (status != lct::Status::Ok)
   {
-    vtkErrorMacro(<< "InterpolateTransform(" << t << "): "
-                  << (status == lct::Status::NoRealLogarithm
-                         ? "two transforms combined here have no real MatrixLog logarithm "
-                           "between them; use the Polar parametrisation"
-                         : lct::describe(status))
-                  << ". Output unchanged.");
+    vtkErrorMacro(<< "InterpolateTransform(" << lct::formatNumber(t) << "): "
+                  << (this->ConsistentRotation ? "the absolute logarithms (ConsistentRotation) "
+                                               : "the combination of the keys ")
+                  << "failed: " << lct::describe(status) << advice(status, in.P)
+                  << "; output unchanged.");
     return false;
   }
   Eigen::Map<RowMajor4> output(out);

@@ -31,12 +31,24 @@
  * way between keys. Meant for spins: over hundreds of keys the absolute rotation vectors wind up
  * far from the identity, where log-space blending distorts (measured on motion capture).
  *
- * Keys are copied when added and their logs computed then, once; an AddTransform at an existing
- * time replaces that key (as VTK does). InterpolateTransform clamps t to [GetMinimumT(),
- * GetMaximumT()] like VTK. Bad keys (NaN/Inf, det <= 0, projective) are rejected with
- * vtkErrorMacro and leave the interpolator unchanged; AddTransform returns 1 on success, 0 on
- * rejection. InterpolateTransform returns 0 (and leaves the output untouched) when there is no
- * key or t is NaN.
+ * Keys are copied when added; an AddTransform at an existing time replaces that key (as VTK
+ * does). Each key is validated on its own (finite, affine, det > 0, condition number up to 1e13,
+ * no subnormal stretch; lct/Conditioning.h) and its steps to its neighbours must have a logarithm
+ * in the parametrisation; a key failing either is rejected with a vtkErrorMacro naming the cause
+ * and leaves the interpolator unchanged (AddTransform returns 0, else 1). Loading n keys in any
+ * order costs O(n log n); the key logs are computed once, by the first InterpolateTransform
+ * after the keys changed (appends and replacements update them in place).
+ *
+ * InterpolateTransform clamps a finite t to [GetMinimumT(), GetMaximumT()] like VTK (with one
+ * vtkWarningMacro per interpolator, so the clamp is never silent); it returns 0 with an error,
+ * leaving the output untouched, when there is no key, t is NaN or infinite, or the result is
+ * not representable (e.g. a spline overshoot that overflows): no NaN or Inf is ever written.
+ *
+ * Concurrency: once the keys and the settings no longer change, InterpolateTransform may be
+ * called from several threads at once on one interpolator, each thread with its own output
+ * object (the key logs rebuilt lazily are built once, under a mutex; the check is
+ * Testing/Unit/TestConcurrency.cxx, run under ThreadSanitizer). Adding or removing keys, or
+ * changing a setting, while another thread interpolates is a data race.
  *
  * @warning This class derives from vtkObject, not from vtkTransformInterpolator: VTK 9.1 declares
  * that class's methods non-virtual, so a subclass would be silently bypassed through a base
@@ -83,8 +95,10 @@ public:
   ///@{
   /**
    * Add a key at time t (copied). A key at an existing time replaces it. Returns 1 on success,
-   * 0 (with an error, interpolator unchanged) for a null, non-finite, projective or
-   * orientation-reversing key, or one without coordinates in the parametrisation.
+   * 0 (with an error naming the cause, interpolator unchanged) for a null key, a non-finite t,
+   * a key that is non-finite, projective, orientation-reversing, singular or beyond the
+   * conditioning limit, or one whose step to a neighbouring key has no logarithm in the
+   * parametrisation.
    */
   int AddTransform(double t, vtkTransform* xform);
   int AddTransform(double t, vtkMatrix4x4* matrix);
@@ -92,14 +106,16 @@ public:
   ///@}
 
   /**
-   * Remove the key at time t (if any).
+   * Remove the key at time t (if any). Refused, with an error, when its two neighbours would be
+   * joined by a step without a logarithm in the parametrisation.
    */
   void RemoveTransform(double t);
 
   ///@{
   /**
-   * The transform at time t (clamped to the key range). Returns 1 on success, 0 when there is no
-   * key or t is NaN (the output is then untouched).
+   * The transform at time t (a finite t is clamped to the key range, with a warning once).
+   * Returns 1 on success; 0, with an error and the output untouched, when there is no key, t is
+   * NaN or infinite, or the result cannot be represented.
    */
   int InterpolateTransform(double t, vtkTransform* xform);
   int InterpolateTransform(double t, vtkMatrix4x4* matrix);

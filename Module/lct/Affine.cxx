@@ -1,5 +1,6 @@
 #include "lct/Affine.h"
 
+#include "lct/Conditioning.h"
 #include "lct/PolarDecomposition.h"
 
 #include <Eigen/LU>
@@ -30,7 +31,12 @@ Status validateAffine(const Eigen::Matrix4d& m)
 
 Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m)
 {
-  const Eigen::Matrix3d inverseLinear = m.topLeftCorner<3, 3>().inverse();
+  // (2^e A)^-1 = 2^-e A^-1: the cofactors and the determinant of a unit-size A stay in range
+  // (for entries of 1e300 they would overflow, for 1e-300 underflow).
+  const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
+  const int e = unitScaleExponent(linear);
+  const Eigen::Matrix3d inverseLinear =
+    scaledByPowerOfTwo(Eigen::Matrix3d(scaledByPowerOfTwo(linear, -e).inverse()), -e);
   return makeAffine(inverseLinear, -(inverseLinear * m.topRightCorner<3, 1>()));
 }
 

@@ -30,7 +30,8 @@ inline Eigen::Matrix4d makeAffine(const Eigen::Matrix3d& linear, const Eigen::Ve
   return m;
 }
 
-/// The inverse of an affine matrix, using its block structure (no 4x4 inversion).
+/// The inverse of an affine matrix, using its block structure (no 4x4 inversion), at any
+/// magnitude. Entries overflow to Inf when the inverse is out of range (callers check).
 VTKLCT_EXPORT Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m);
 
 } // namespace lct

@@ -14,38 +14,83 @@ namespace
 constexpr double kDegreesToRadians = 3.14159265358979323846 / 180.0;
 }
 
-Result<CameraKey> toCameraKey(const CameraParameters& c)
+namespace
 {
-  using R = Result<CameraKey>;
-  if (!c.position.allFinite() || !c.focalPoint.allFinite() || !c.viewUp.allFinite() ||
-    !std::isfinite(c.viewAngle) || !std::isfinite(c.parallelScale) || !c.windowCenter.allFinite() ||
-    !c.viewShear.allFinite() || !c.clippingRange.allFinite())
+template <typename T>
+Result<T> failure(Status status, const char* reason, const char** why)
+{
+  if (why)
   {
-    return R::failure(Status::NonFinite);
+    *why = reason;
+  }
+  return Result<T>::failure(status);
+}
+
+bool withinMagnitude(const Eigen::Vector3d& v)
+{
+  return v.cwiseAbs().maxCoeff() <= kMaxCameraMagnitude;
+}
+} // namespace
+
+Result<CameraKey> toCameraKey(const CameraParameters& c, const char** why)
+{
+  using K = CameraKey;
+  if (!c.position.allFinite() || !c.focalPoint.allFinite() || !c.viewUp.allFinite())
+  {
+    return failure<K>(Status::NonFinite, "the position, focal point or view up is NaN or Inf", why);
+  }
+  if (!std::isfinite(c.viewAngle) || !std::isfinite(c.parallelScale) ||
+    !c.windowCenter.allFinite() || !c.viewShear.allFinite() || !c.clippingRange.allFinite())
+  {
+    return failure<K>(Status::NonFinite,
+      "the view angle, parallel scale, window centre, view shear or clipping range is NaN or Inf",
+      why);
+  }
+  if (!withinMagnitude(c.position) || !withinMagnitude(c.focalPoint))
+  {
+    return failure<K>(Status::OutOfRange,
+      "a coordinate of the position or focal point exceeds 1e150 (vtkCamera squares distances)",
+      why);
   }
   const Eigen::Vector3d back = c.position - c.focalPoint;
-  const double distance = back.norm();
-  const double scale = std::max({ 1.0, c.position.norm(), c.focalPoint.norm() });
+  const double distance = back.stableNorm();
+  const double scale =
+    std::max({ 1.0, c.position.cwiseAbs().maxCoeff(), c.focalPoint.cwiseAbs().maxCoeff() });
   if (!(distance > 1e-12 * scale))
   {
-    return R::failure(Status::InvalidArgument); // position at the focal point
+    return failure<K>(Status::InvalidArgument,
+      distance == 0.0 ? "the position equals the focal point"
+                      : "the position and the focal point are closer than 1e-12 of their "
+                        "magnitude (no view direction)",
+      why);
   }
   const Eigen::Vector3d z = back / distance;
-  Eigen::Vector3d x = c.viewUp.cross(z);
-  // View up parallel to the view direction (or zero): no orientation.
-  if (!(x.norm() > 1e-9 * c.viewUp.norm()))
+  const double upNorm = c.viewUp.stableNorm();
+  if (!(upNorm > 0.0))
   {
-    return R::failure(Status::InvalidArgument);
+    return failure<K>(Status::InvalidArgument, "the view up is zero", why);
+  }
+  Eigen::Vector3d x = (c.viewUp / upNorm).cross(z);
+  if (!(x.norm() > 1e-9))
+  {
+    return failure<K>(
+      Status::InvalidArgument, "the view up is parallel to the view direction", why);
   }
   x.normalize();
   const Eigen::Vector3d y = z.cross(x);
-  if (!(c.parallelScale > 0.0) || !(c.viewAngle > 0.0 && c.viewAngle < 180.0))
+  if (!(c.viewAngle > 0.0 && c.viewAngle < 180.0))
   {
-    return R::failure(Status::InvalidArgument);
+    return failure<K>(Status::InvalidArgument, "the view angle is outside (0, 180) degrees", why);
   }
-  if (!(c.clippingRange[0] > 0.0 && c.clippingRange[1] > c.clippingRange[0]))
+  if (!(c.parallelScale > 0.0) || c.parallelScale > kMaxCameraMagnitude)
   {
-    return R::failure(Status::InvalidArgument);
+    return failure<K>(Status::InvalidArgument, "the parallel scale is not in (0, 1e150]", why);
+  }
+  if (!(c.clippingRange[0] > 0.0 && c.clippingRange[1] > c.clippingRange[0]) ||
+    c.clippingRange[1] > kMaxCameraMagnitude)
+  {
+    return failure<K>(
+      Status::InvalidArgument, "the clipping range is not 0 < near < far <= 1e150", why);
   }
   CameraKey key;
   key.focalFrame.block<3, 1>(0, 0) = x;
@@ -62,14 +107,35 @@ Result<CameraKey> toCameraKey(const CameraParameters& c)
   ch[CameraKey::ShearX] = c.viewShear[0];
   ch[CameraKey::ShearY] = c.viewShear[1];
   ch[CameraKey::ShearCenter] = c.viewShear[2];
-  ch[CameraKey::LogNear] = std::log(c.clippingRange[0] / distance);
-  ch[CameraKey::LogFar] = std::log(c.clippingRange[1] / distance);
+  // log(near / distance) as a difference of logs: the ratio itself may over- or underflow.
+  ch[CameraKey::LogNear] = std::log(c.clippingRange[0]) - ch[CameraKey::LogDistance];
+  ch[CameraKey::LogFar] = std::log(c.clippingRange[1]) - ch[CameraKey::LogDistance];
+  if (!ch.allFinite())
+  {
+    return failure<K>(Status::OutOfRange, "a camera parameter is out of range", why);
+  }
   return { key, Status::Ok };
 }
 
-CameraParameters fromCameraKey(const CameraKey& key)
+Result<CameraParameters> fromCameraKey(const CameraKey& key, const char** why)
 {
+  using C = CameraParameters;
   const auto& ch = key.channels;
+  if (!ch.allFinite() || !key.focalFrame.allFinite())
+  {
+    return failure<C>(Status::NonFinite, "the interpolated camera is NaN or Inf", why);
+  }
+  const double logMax = std::log(kMaxCameraMagnitude);
+  if (ch[CameraKey::LogDistance] > logMax ||
+    ch[CameraKey::LogDistance] + std::max(ch[CameraKey::LogNear], ch[CameraKey::LogFar]) > logMax)
+  {
+    return failure<C>(
+      Status::OutOfRange, "the interpolated distance or far clipping plane exceeds 1e150", why);
+  }
+  if (ch[CameraKey::LogParallelScale] > logMax)
+  {
+    return failure<C>(Status::OutOfRange, "the interpolated parallel scale exceeds 1e150", why);
+  }
   const double distance = std::exp(ch[CameraKey::LogDistance]);
   CameraParameters c;
   c.focalPoint = key.focalFrame.block<3, 1>(0, 3);
@@ -81,9 +147,25 @@ CameraParameters fromCameraKey(const CameraKey& key)
   c.windowCenter = Eigen::Vector2d(ch[CameraKey::WindowCenterX], ch[CameraKey::WindowCenterY]);
   c.viewShear =
     Eigen::Vector3d(ch[CameraKey::ShearX], ch[CameraKey::ShearY], ch[CameraKey::ShearCenter]);
-  c.clippingRange =
-    distance * Eigen::Vector2d(std::exp(ch[CameraKey::LogNear]), std::exp(ch[CameraKey::LogFar]));
-  return c;
+  c.clippingRange = Eigen::Vector2d(std::exp(ch[CameraKey::LogNear] + ch[CameraKey::LogDistance]),
+    std::exp(ch[CameraKey::LogFar] + ch[CameraKey::LogDistance]));
+  if (!withinMagnitude(c.position) || !withinMagnitude(c.focalPoint))
+  {
+    return failure<C>(Status::OutOfRange,
+      "the interpolated position or focal point exceeds 1e150 (vtkCamera squares distances)", why);
+  }
+  if (!(distance > 0.0) || !(c.parallelScale > 0.0) || !(c.clippingRange[0] > 0.0) ||
+    !(c.clippingRange[1] > c.clippingRange[0]))
+  {
+    return failure<C>(Status::OutOfRange,
+      "the interpolated distance, parallel scale or clipping range underflows to 0", why);
+  }
+  if (!(c.viewAngle > 0.0 && c.viewAngle < 180.0))
+  {
+    return failure<C>(
+      Status::OutOfRange, "the interpolated view angle rounds to 0 or 180 degrees", why);
+  }
+  return { c, Status::Ok };
 }
 
 Eigen::Matrix4d cameraMatrix(const CameraParameters& c)
@@ -143,9 +225,15 @@ Result<CameraParameters> fromCameraMatrix(const Eigen::Matrix4d& m, const Camera
   c.viewUp = rotation.row(1).transpose();
   c.viewAngle = 2.0 * std::atan(1.0 / k(1, 1)) / kDegreesToRadians;
   c.windowCenter = Eigen::Vector2d(k(0, 2), k(1, 2));
-  if (!c.position.allFinite() || !(c.viewAngle > 0.0 && c.viewAngle < 180.0))
+  if (!c.position.allFinite() || !c.focalPoint.allFinite() || !c.viewUp.allFinite() ||
+    !c.windowCenter.allFinite())
   {
     return R::failure(Status::NonFinite);
+  }
+  if (!withinMagnitude(c.position) || !withinMagnitude(c.focalPoint) ||
+    !(c.viewAngle > 0.0 && c.viewAngle < 180.0))
+  {
+    return R::failure(Status::OutOfRange);
   }
   return { c, Status::Ok };
 }

@@ -74,13 +74,23 @@ struct CameraKey
   bool parallelProjection = false;
 };
 
-/// The key of a camera. Fails with NonFinite, or InvalidArgument for a degenerate camera:
-/// position at the focal point, view up parallel to the view direction, view angle outside
-/// (0, 180), parallel scale <= 0, or clipping range not 0 < near < far.
-VTKLCT_EXPORT Result<CameraKey> toCameraKey(const CameraParameters& camera);
+/// The largest coordinate, distance, parallel scale or clipping distance accepted: vtkCamera
+/// squares distances (ComputeDistance, the view transform), which overflows beyond ~1e154.
+constexpr double kMaxCameraMagnitude = 1e150;
 
-/// The camera of a key (view up orthogonalised, as VTK renders it).
-VTKLCT_EXPORT CameraParameters fromCameraKey(const CameraKey& key);
+/// The key of a camera. Fails with NonFinite (a NaN or Inf parameter), OutOfRange (a magnitude
+/// beyond kMaxCameraMagnitude) or InvalidArgument for a degenerate camera: position at the focal
+/// point, view up zero or parallel to the view direction, view angle outside (0, 180), parallel
+/// scale <= 0, or clipping range not 0 < near < far. `why`, when given, receives a phrase naming
+/// the one condition that failed (e.g. "the position equals the focal point").
+VTKLCT_EXPORT Result<CameraKey> toCameraKey(
+  const CameraParameters& camera, const char** why = nullptr);
+
+/// The camera of a key (view up orthogonalised, as VTK renders it). Fails with OutOfRange when
+/// the channels give a camera beyond vtkCamera's range (distance, scale or clipping range
+/// overflowing or underflowing, a view angle rounding to 0 or 180), naming it in `why`.
+VTKLCT_EXPORT Result<CameraParameters> fromCameraKey(
+  const CameraKey& key, const char** why = nullptr);
 
 /**
  * Hawkins & Grimm's literal formulation (eq. 5, 7), offered for comparison: the camera matrix

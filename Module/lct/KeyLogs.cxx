@@ -24,11 +24,11 @@ void KeyLogs::updateAbsoluteFrom(int index)
   for (int i = std::max(index, 0); i < n; ++i)
   {
     const LogCoords* previous =
-      (i > 0 && this->AbsoluteValid[i - 1]) ? &this->Absolute[i - 1] : nullptr;
+      (i > 0 && this->AbsoluteStatus[i - 1] == Status::Ok) ? &this->Absolute[i - 1] : nullptr;
     const auto a = logarithm(this->Matrices[i], this->P, previous);
-    const bool unchanged = i > index && this->AbsoluteValid[i] == static_cast<char>(a.ok()) &&
-      (!a.ok() || a.value == this->Absolute[i]);
-    this->AbsoluteValid[i] = a.ok();
+    const bool unchanged =
+      i > index && this->AbsoluteStatus[i] == a.status && (!a.ok() || a.value == this->Absolute[i]);
+    this->AbsoluteStatus[i] = a.status;
     if (a)
     {
       this->Absolute[i] = a.value;
@@ -90,7 +90,7 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
     for (int slot = 0; slot <= 2 * kReach; ++slot)
     {
       const int i = r + slot - kReach;
-      w.valid[slot] = false;
+      w.status[slot] = Status::InvalidArgument;
       if (i < 0 || i >= size)
       {
         continue;
@@ -101,21 +101,24 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
       if (!pairsEdited && std::abs(oldI - oldR) <= kReach)
       {
         const Window& old = this->Windows[oldR];
-        w.valid[slot] = old.valid[oldI - oldR + kReach];
+        w.status[slot] = old.status[oldI - oldR + kReach];
         w.logs[slot] = old.logs[oldI - oldR + kReach];
         continue;
       }
-      const auto l = logarithm(inverse * edited(i), this->P);
+      const Eigen::Matrix4d step = inverse * edited(i);
+      // A step that overflows is out of range, not "NaN or Inf in the input".
+      const auto l = step.allFinite() ? logarithm(step, this->P)
+                                      : Result<LogCoords>::failure(Status::OutOfRange);
+      w.status[slot] = l.status;
       if (l)
       {
         w.logs[slot] = l.value;
-        w.valid[slot] = true;
       }
     }
-    // MatrixLog only: fatal between neighbours when asked (no curve could join them).
-    if (neighboursMustCombine && r + 1 < size && !w.valid[kReach + 1])
+    // Fatal between neighbours when asked (no curve could join them).
+    if (neighboursMustCombine && r + 1 < size && w.status[kReach + 1] != Status::Ok)
     {
-      return Status::NoRealLogarithm;
+      return w.status[kReach + 1];
     }
     scratch.push_back(w);
   }
@@ -125,7 +128,7 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
       this->Matrices.insert(this->Matrices.begin() + index, *m);
       this->Windows.insert(this->Windows.begin() + index, Window());
       this->Absolute.insert(this->Absolute.begin() + index, LogCoords::Zero());
-      this->AbsoluteValid.insert(this->AbsoluteValid.begin() + index, 0);
+      this->AbsoluteStatus.insert(this->AbsoluteStatus.begin() + index, Status::InvalidArgument);
       break;
     case Edit::Replace:
       this->Matrices[index] = *m;
@@ -134,7 +137,7 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
       this->Matrices.erase(this->Matrices.begin() + index);
       this->Windows.erase(this->Windows.begin() + index);
       this->Absolute.erase(this->Absolute.begin() + index);
-      this->AbsoluteValid.erase(this->AbsoluteValid.begin() + index);
+      this->AbsoluteStatus.erase(this->AbsoluteStatus.begin() + index);
       break;
   }
   this->commitWindows(first, scratch);
@@ -166,7 +169,17 @@ const LogCoords* KeyLogs::relative(int i, int r) const
   }
   const Window& w = this->Windows[r];
   const int slot = i - r + kReach;
-  return w.valid[slot] ? &w.logs[slot] : nullptr;
+  return w.status[slot] == Status::Ok ? &w.logs[slot] : nullptr;
+}
+
+Status KeyLogs::relativeStatus(int i, int r) const
+{
+  const int n = static_cast<int>(this->size());
+  if (std::abs(i - r) > kReach || r < 0 || r >= n || i < 0 || i >= n)
+  {
+    return Status::InvalidArgument;
+  }
+  return this->Windows[r].status[i - r + kReach];
 }
 
 Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const
@@ -177,16 +190,22 @@ Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix
     const LogCoords* l = this->relative(w.key[j], reference);
     if (!l)
     {
-      return Status::NoRealLogarithm;
+      return this->relativeStatus(w.key[j], reference);
     }
     sum += w.weight[j] * *l;
   }
   const auto m = exponential(sum, this->P);
-  if (m)
+  if (!m)
   {
-    out = this->Matrices[reference] * m.value;
+    return m.status;
   }
-  return m.status;
+  const Eigen::Matrix4d result = this->Matrices[reference] * m.value;
+  if (!result.allFinite())
+  {
+    return Status::OutOfRange;
+  }
+  out = result;
+  return Status::Ok;
 }
 
 Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) const
@@ -222,7 +241,11 @@ Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) con
   const auto blend = matrixPower(inverseAffine(out) * other, s);
   if (blend)
   {
-    out = out * blend.value;
+    const Eigen::Matrix4d blended = out * blend.value;
+    if (blended.allFinite())
+    {
+      out = blended;
+    }
   }
   return status;
 }
@@ -232,9 +255,9 @@ Status KeyLogs::combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) con
   LogCoords sum = LogCoords::Zero();
   for (int j = 0; j < w.count; ++j)
   {
-    if (!this->AbsoluteValid[w.key[j]])
+    if (this->AbsoluteStatus[w.key[j]] != Status::Ok)
     {
-      return Status::NoRealLogarithm;
+      return this->AbsoluteStatus[w.key[j]];
     }
     sum += w.weight[j] * this->Absolute[w.key[j]];
   }

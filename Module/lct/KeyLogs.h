@@ -55,8 +55,8 @@ public:
   }
 
   /// Replaces everything by `matrices` in parametrisation p. Fails (and keeps the previous
-  /// state) when, with `neighboursMustCombine`, two neighbours have no relative log; `failed`
-  /// then receives the index of the later of the two.
+  /// state) when, with `neighboursMustCombine`, two neighbours have no relative log (the status
+  /// says why); `failed` then receives the index of the later of the two.
   Status build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisation p,
     bool neighboursMustCombine, int* failed = nullptr);
 
@@ -74,12 +74,16 @@ public:
 
   /// log(M_r^-1 M_i), or null when it does not exist or |i - r| > kReach.
   const LogCoords* relative(int i, int r) const;
+  /// Why relative(i, r) is null (Ok when it is not; InvalidArgument beyond reach).
+  Status relativeStatus(int i, int r) const;
 
-  /// The relative form about the point of largest weight, with the hand-over.
+  /// The relative form about the point of largest weight, with the hand-over. Fails, leaving
+  /// `out` unchanged, with the status of a missing relative log or of the exp, or with
+  /// OutOfRange when the result is not finite.
   Status combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) const;
 
-  /// The absolute form exp(sum_i w_i log M_i). Fails with NoRealLogarithm when a key with
-  /// weight has no absolute log (MatrixLog).
+  /// The absolute form exp(sum_i w_i log M_i). Fails, leaving `out` unchanged, with the status
+  /// of a key without an absolute log (e.g. NoRealLogarithm, MatrixLog) or of the exp.
   Status combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) const;
 
 private:
@@ -87,7 +91,7 @@ private:
   struct Window
   {
     LogCoords logs[2 * kReach + 1];
-    bool valid[2 * kReach + 1];
+    Status status[2 * kReach + 1];
   };
   enum class Edit
   {
@@ -105,7 +109,7 @@ private:
   std::vector<Eigen::Matrix4d> Matrices;
   std::vector<Window> Windows;
   std::vector<LogCoords> Absolute;
-  std::vector<char> AbsoluteValid;
+  std::vector<Status> AbsoluteStatus;
 };
 
 } // namespace lct

@@ -1,16 +1,21 @@
 /**
  * @file Keyframes.h
- * @brief Keys ordered by strictly increasing time, with their times kept contiguous for the curve
- *        weights (lct/Curves.h). The bookkeeping shared by the interpolators.
+ * @brief Keys ordered by strictly increasing time: O(log n) edits, and a flat view (times kept
+ *        contiguous for the curve weights of lct/Curves.h) rebuilt in O(n) when asked for. The
+ *        bookkeeping shared by the interpolators.
  *
- * `Key` is any type with a `double Time` member. A key added at an existing time replaces that
- * key, as VTK's interpolators do.
+ * `Key` is any type with a `double Time` member. A key set at an existing time replaces that
+ * key, as VTK's interpolators do. Loading n keys in any order therefore costs O(n log n) (a
+ * sorted vector would move O(n) keys per insertion in reverse time order: 20 000 prop keys took
+ * 90 s that way), and the flat view is rebuilt once, by the first evaluation after the edits.
  */
 #ifndef lct_Keyframes_h
 #define lct_Keyframes_h
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
+#include <map>
 #include <vector>
 
 namespace lct
@@ -22,51 +27,117 @@ class Keyframes
 public:
   std::size_t size() const { return this->Keys.size(); }
   bool empty() const { return this->Keys.empty(); }
-  const Key& operator[](std::size_t i) const { return this->Keys[i]; }
-  Key& operator[](std::size_t i) { return this->Keys[i]; }
-  /// The key times, in order (what lct::curveWeights takes).
-  const std::vector<double>& times() const { return this->Times; }
-  double minimumTime() const { return this->empty() ? 0.0 : this->Times.front(); }
-  double maximumTime() const { return this->empty() ? 0.0 : this->Times.back(); }
+  double minimumTime() const { return this->empty() ? 0.0 : this->Keys.begin()->first; }
+  double maximumTime() const { return this->empty() ? 0.0 : this->Keys.rbegin()->first; }
 
-  /// The index of the key at time t, or -1.
-  int find(double t) const
+  /// The key at exactly time t, or null.
+  const Key* find(double t) const
   {
-    const int i = this->position(t);
-    return (i < static_cast<int>(this->size()) && this->Times[i] == t) ? i : -1;
+    const auto it = this->Keys.find(t);
+    return it == this->Keys.end() ? nullptr : &it->second;
   }
+  Key* find(double t)
+  {
+    const auto it = this->Keys.find(t);
+    return it == this->Keys.end() ? nullptr : &it->second;
+  }
+  /// The nearest key strictly before / after time t, or null.
+  const Key* before(double t) const
+  {
+    auto it = this->Keys.lower_bound(t);
+    return it == this->Keys.begin() ? nullptr : &std::prev(it)->second;
+  }
+  const Key* after(double t) const
+  {
+    const auto it = this->Keys.upper_bound(t);
+    return it == this->Keys.end() ? nullptr : &it->second;
+  }
+  /// Whether t is later than every key (an append keeps a flat view cheap to extend).
+  bool isAppend(double t) const { return this->empty() || t > this->maximumTime(); }
 
-  /// The index at which a key at time t belongs (that of the key it replaces, if any).
-  int position(double t) const
+  /// Inserts `key`, or replaces the key at its time. A replacement or an append keeps the flat
+  /// view current.
+  void set(const Key& key)
   {
-    return static_cast<int>(
-      std::lower_bound(this->Times.begin(), this->Times.end(), t) - this->Times.begin());
+    const bool append = this->isAppend(key.Time);
+    const auto [it, inserted] = this->Keys.insert_or_assign(key.Time, key);
+    if (!inserted)
+    {
+      return; // the same node: the flat view still points at it
+    }
+    if (append && this->Flat)
+    {
+      this->Times.push_back(key.Time);
+      this->Pointers.push_back(&it->second);
+    }
+    else
+    {
+      this->Flat = false;
+    }
   }
-
-  void insert(int index, const Key& key)
+  /// The position of the key at time t in the flat view, or -1. Requires flat().
+  int index(double t) const
   {
-    this->Keys.insert(this->Keys.begin() + index, key);
-    this->Times.insert(this->Times.begin() + index, key.Time);
+    const auto it = std::lower_bound(this->Times.begin(), this->Times.end(), t);
+    return (it != this->Times.end() && *it == t) ? static_cast<int>(it - this->Times.begin()) : -1;
   }
-  void replace(int index, const Key& key)
+  /// Removes the key at time t; false when there is none.
+  bool erase(double t)
   {
-    this->Keys[index] = key;
-    this->Times[index] = key.Time;
-  }
-  void erase(int index)
-  {
-    this->Keys.erase(this->Keys.begin() + index);
-    this->Times.erase(this->Times.begin() + index);
+    if (this->Keys.erase(t) == 0)
+    {
+      return false;
+    }
+    this->Flat = false;
+    return true;
   }
   void clear()
   {
     this->Keys.clear();
     this->Times.clear();
+    this->Pointers.clear();
+    this->Flat = true;
+  }
+
+  /// The flat view: valid while `flat()`, i.e. until an edit other than an append.
+  bool flat() const { return this->Flat; }
+  void flatten()
+  {
+    if (this->Flat)
+    {
+      return;
+    }
+    this->Times.clear();
+    this->Pointers.clear();
+    this->Times.reserve(this->Keys.size());
+    this->Pointers.reserve(this->Keys.size());
+    for (const auto& [time, key] : this->Keys)
+    {
+      this->Times.push_back(time);
+      this->Pointers.push_back(&key);
+    }
+    this->Flat = true;
+  }
+  /// The key times in order (what lct::curveWeights takes). Requires flat().
+  const std::vector<double>& times() const { return this->Times; }
+  /// The i-th key in time order. Requires flat().
+  const Key& operator[](std::size_t i) const { return *this->Pointers[i]; }
+
+  /// Every key in time order (no flat view needed).
+  template <typename Visit>
+  void forEach(Visit&& visit) const
+  {
+    for (const auto& entry : this->Keys)
+    {
+      visit(entry.second);
+    }
   }
 
 private:
-  std::vector<Key> Keys;
+  std::map<double, Key> Keys;
   std::vector<double> Times;
+  std::vector<const Key*> Pointers;
+  bool Flat = true;
 };
 
 } // namespace lct

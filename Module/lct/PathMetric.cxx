@@ -57,11 +57,31 @@ PathMetricResult measurePath(
       cameraSum += 100.0 * (cameraLength - cameraChord) / cameraChord;
       ++out.pointsMeasuredCamera;
     }
+    else if (cameraLength <= kNegligible * (1.0 + firstCamera.norm()))
+    {
+      ++out.pointsMeasuredCamera; // still: no excess
+    }
+    else
+    {
+      ++out.closedCamera;
+    }
+    if (!std::isfinite(screenLength))
+    {
+      continue; // behind the camera at some sample: no screen path (it left the view)
+    }
     const double screenChord = (lastScreen - firstScreen).norm();
-    if (std::isfinite(screenLength) && screenChord > kNegligible * (1.0 + screenLength))
+    if (screenChord > kNegligible * (1.0 + screenLength))
     {
       screenSum += 100.0 * (screenLength - screenChord) / screenChord;
       ++out.pointsMeasuredScreen;
+    }
+    else if (screenLength <= kNegligible * (1.0 + firstScreen.norm()))
+    {
+      ++out.pointsMeasuredScreen;
+    }
+    else
+    {
+      ++out.closedScreen;
     }
   }
   out.cameraSpaceExcess = out.pointsMeasuredCamera ? cameraSum / out.pointsMeasuredCamera : 0.0;

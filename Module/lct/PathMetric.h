@@ -6,7 +6,9 @@
  * For each scene point, the path it follows in camera space (view matrix times point) over the
  * sampled cameras has length l; the straight segment between its first and last positions has
  * length l0. The excess is 100 (l - l0) / l0 percent (the paper prints it with the sign
- * flipped), averaged over the points whose l0 is not negligible. The same on the screen uses the
+ * flipped), averaged over the points; a point that does not move counts as 0, and a point that
+ * moves but comes back (l0 negligible, l not) is counted as closed and left out: callers must
+ * report such a path rather than average around it. The same on the screen uses the
  * normalised device coordinates (x, y) of the composite projection. A point "leaves the view"
  * when at some sample it is behind the camera or outside [-1, 1]^2 on the screen.
  */
@@ -27,9 +29,13 @@ struct PathMetricResult
 {
   double cameraSpaceExcess = 0.0; ///< mean excess path length in camera space, percent
   double screenSpaceExcess = 0.0; ///< mean excess path length on the screen, percent
-  int pointsMeasuredCamera = 0;   ///< points with a non-negligible camera-space chord
-  int pointsMeasuredScreen = 0;   ///< points with a non-negligible screen chord
-  std::vector<char> leftView;     ///< per point: left the view at some sample
+  int pointsMeasuredCamera = 0;   ///< points with a chord, or that do not move (excess 0)
+  int pointsMeasuredScreen = 0;   ///< likewise on the screen
+  /// Points that move but come back to where they started (a negligible chord after a path of
+  /// some length, e.g. over a full orbit): their excess is unbounded, so none is averaged in.
+  int closedCamera = 0;
+  int closedScreen = 0;
+  std::vector<char> leftView; ///< per point: left the view at some sample
 };
 
 /// The metric over cameras given by their view matrices and composite projection matrices

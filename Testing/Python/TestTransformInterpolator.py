@@ -154,19 +154,27 @@ class TestKeys(InterpolatorTestCase):
             interpolator = make_interpolator(kind)
             first = interpolate(interpolator, KEY_TIMES[0])
             last = interpolate(interpolator, KEY_TIMES[-1])
-            for t in (KEY_TIMES[0] - 1.0, -1e6, -math.inf):
+            warnings = ErrorRecorder(interpolator, vtkCommand.WarningEvent)
+            for t in (KEY_TIMES[0] - 1.0, -1e6):
                 self.assertElementsClose(interpolate(interpolator, t), first, 0.0, f"{kind} t={t}")
-            for t in (KEY_TIMES[-1] + 0.25, 1e6, math.inf):
+            for t in (KEY_TIMES[-1] + 0.25, 1e6):
                 self.assertElementsClose(interpolate(interpolator, t), last, 0.0, f"{kind} t={t}")
+            # The clamp is reported, once per interpolator.
+            self.assertEqual(len(warnings.messages), 1, kind)
+            self.assertIn("clamped", warnings.messages[0])
 
-    def test_nan_time_is_refused_and_output_untouched(self):
+    def test_nan_and_infinite_times_are_refused_and_output_untouched(self):
         interpolator = make_interpolator()
         out = vtkMatrix4x4()
         out.SetElement(0, 3, 42.0)
         before = elements(out)
-        ErrorRecorder(interpolator)  # silence a possible error message
-        self.assertEqual(interpolator.InterpolateTransform(math.nan, out), 0)
-        self.assertEqual(elements(out), before)
+        errors = ErrorRecorder(interpolator)
+        for t in (math.nan, math.inf, -math.inf):
+            self.assertEqual(interpolator.InterpolateTransform(t, out), 0, t)
+            self.assertEqual(elements(out), before)
+        self.assertEqual(len(errors.messages), 3)
+        self.assertIn("t is NaN", errors.messages[0])
+        self.assertIn("infinite", errors.messages[1])
 
 
 class TestEditing(InterpolatorTestCase):

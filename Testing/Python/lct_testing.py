@@ -5,9 +5,10 @@ from vtkmodules.vtkCommonCore import vtkCommand
 
 
 class ErrorRecorder:
-    """Observer for vtkCommand.ErrorEvent that keeps the messages (and silences the output)."""
+    """Observer for vtkCommand.ErrorEvent (or another event with a message, such as
+    WarningEvent) that keeps the messages (and silences the output)."""
 
-    def __init__(self, obj):
+    def __init__(self, obj, event=vtkCommand.ErrorEvent):
         self.messages = []
 
         # VTK looks for the call data type on the callback itself: use a decorated function.
@@ -16,7 +17,7 @@ class ErrorRecorder:
             self.messages.append(message)
 
         self.callback = on_error
-        obj.AddObserver(vtkCommand.ErrorEvent, on_error)
+        obj.AddObserver(event, on_error)
 
     @property
     def count(self):

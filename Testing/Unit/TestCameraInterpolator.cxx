@@ -235,14 +235,14 @@ TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
     vtkNew<vtkCamera> c; // position at the focal point
     c->SetPosition(0, 0, 0);
     c->SetFocalPoint(0, 0, 0);
-    reject(c, 1.0, "position = focal point", "degenerate");
+    reject(c, 1.0, "position = focal point", "the position equals the focal point");
   }
   {
     vtkNew<vtkCamera> c; // view up along the view direction
     c->SetPosition(0, 0, 5);
     c->SetFocalPoint(0, 0, 0);
     c->SetViewUp(0, 0, 1);
-    reject(c, 1.0, "view up parallel", "degenerate");
+    reject(c, 1.0, "view up parallel", "parallel to the view direction");
   }
   {
     vtkNew<vtkCamera> c;

@@ -1,0 +1,390 @@
+// The hostile-input classes of the robustness issue, through the VTK classes: every one gets an
+// error naming its true cause and a return value to test, the object keeps its last valid state,
+// and nothing non-finite is ever written.
+#include "vtkCameraInterpolatorLCT.h"
+#include "vtkCameraPathMetric.h"
+#include "vtkLogTransform.h"
+#include "vtkTransformInterpolatorLCT.h"
+
+#include "VtkTestHelpers.h"
+
+#include "vtkCamera.h"
+#include "vtkCollection.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkTransform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using lct_test::ErrorCounter;
+
+namespace
+{
+vtkNew<vtkMatrix4x4> diagonalMatrix(double x, double y, double z)
+{
+  vtkNew<vtkMatrix4x4> m;
+  m->SetElement(0, 0, x);
+  m->SetElement(1, 1, y);
+  m->SetElement(2, 2, z);
+  return m;
+}
+
+bool allFinite(vtkMatrix4x4* m)
+{
+  for (int i = 0; i < 16; ++i)
+  {
+    if (!std::isfinite(m->GetElement(i / 4, i % 4)))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool contains(const std::string& text, const char* phrase)
+{
+  return text.find(phrase) != std::string::npos;
+}
+} // namespace
+
+TEST(Robustness, IllConditionedStretchThroughVtkLogTransform)
+{
+  // The issue's first case, through the VTK class in both parametrisations.
+  for (int p : { vtkLogTransform::POLAR, vtkLogTransform::MATRIX_LOG })
+  {
+    vtkNew<vtkLogTransform> t;
+    t->SetParametrisation(p);
+    vtkNew<vtkTransform> scale;
+    scale->Scale(1e-6, 1, 1e6);
+    ASSERT_EQ(t->SetTransform(scale), 1);
+    vtkMatrix4x4* m = t->GetMatrix();
+    EXPECT_NEAR(m->GetElement(0, 0) / 1e-6, 1.0, 1e-14);
+    EXPECT_NEAR(m->GetElement(1, 1), 1.0, 1e-14);
+    EXPECT_NEAR(m->GetElement(2, 2) / 1e6, 1.0, 1e-14);
+    // Beyond the conditioning limit: refused by name, state kept.
+    vtkNew<ErrorCounter> errors;
+    t->AddObserver(vtkCommand::ErrorEvent, errors);
+    EXPECT_EQ(t->SetMatrix(diagonalMatrix(1e-8, 1, 1e8)), 0);
+    EXPECT_TRUE(contains(errors->Last, "ill-conditioned")) << errors->Last;
+    EXPECT_NEAR(t->GetMatrix()->GetElement(2, 2) / 1e6, 1.0, 1e-14);
+  }
+}
+
+TEST(Robustness, ExtremeMagnitudesThroughVtkLogTransform)
+{
+  vtkNew<vtkLogTransform> t;
+  for (double scale : { 1e102, 1e300, std::exp(-300.0), 1e-300 })
+  {
+    ASSERT_EQ(t->SetMatrix(diagonalMatrix(scale, scale, scale)), 1) << scale;
+    EXPECT_NEAR(t->GetMatrix()->GetElement(1, 1) / scale, 1.0, 1e-13) << scale;
+    // The inverse is representable, so Inverse() and GetInverse() hold it.
+    vtkLinearTransform* inverse = t->GetLinearInverse();
+    inverse->Update();
+    // Within the round-off of a log coordinate of size |log scale|.
+    EXPECT_NEAR(inverse->GetMatrix()->GetElement(1, 1) * scale, 1.0,
+      1e-14 + 1e-15 * std::abs(std::log(scale)))
+      << scale;
+  }
+}
+
+TEST(Robustness, StatesWhoseInverseOverflowsAreRefused)
+{
+  // Translate(1e300) after Scale(1e-10): the map is finite, its inverse translation 1e310 is not.
+  // A vtkLogTransform only holds maps it can invert, so GetInverse() never holds a wrong matrix.
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkMatrix4x4> m;
+  m->SetElement(0, 0, 1e-10);
+  m->SetElement(1, 1, 1e-10);
+  m->SetElement(2, 2, 1e-10);
+  m->SetElement(0, 3, 1e300);
+  EXPECT_EQ(t->SetMatrix(m), 0);
+  EXPECT_TRUE(contains(errors->Last, "inverse")) << errors->Last;
+  EXPECT_TRUE(t->GetMatrix()->IsIdentity());
+  vtkLinearTransform* inverse = t->GetLinearInverse();
+  inverse->Update();
+  EXPECT_TRUE(inverse->GetMatrix()->IsIdentity());
+}
+
+TEST(Robustness, DeepCopyOfNullOrForeignTransforms)
+{
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  t->Scale(1.0);
+  t->DeepCopy(nullptr); // VTK's own DeepCopy dereferences it
+  EXPECT_EQ(errors->Count, 1);
+  vtkNew<vtkTransform> foreign;
+  foreign->RotateZ(30);
+  t->DeepCopy(foreign);
+  EXPECT_EQ(errors->Count, 2);
+  EXPECT_TRUE(contains(errors->Last, "SetTransform")) << errors->Last;
+  EXPECT_TRUE(t->GetMatrix()->IsIdentity());
+}
+
+TEST(Robustness, OverflowingOperationsLeaveTheStateUnchanged)
+{
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkTransform> big;
+  big->Translate(1e307, 0, 0);
+  big->Scale(10, 1, 1);
+  ASSERT_EQ(t->SetTransform(big), 1);
+  const double saved = t->GetMatrix()->GetElement(0, 3);
+  EXPECT_EQ(t->Scale(1e300), 0); // coordinates overflow
+  EXPECT_EQ(t->Scale(100.0), 0); // translation 1e309 overflows
+  EXPECT_EQ(errors->Count, 2);
+  EXPECT_EQ(t->GetMatrix()->GetElement(0, 3), saved);
+  EXPECT_FALSE(contains(errors->Last, "NaN")) << errors->Last;
+}
+
+TEST(Robustness, SingularKeyIsRejectedNotTheGoodKeyAfterIt)
+{
+  // diag(1e-20, 1, 1) used to be accepted as a first key, and a good identity key rejected with
+  // "use the polar parametrisation" although Polar was in use.
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  EXPECT_EQ(path->AddTransform(0.0, diagonalMatrix(1e-20, 1, 1)), 0);
+  EXPECT_TRUE(contains(errors->Last, "ill-conditioned")) << errors->Last;
+  EXPECT_EQ(path->AddTransform(0.0, diagonalMatrix(0, 0, 0)), 0);
+  EXPECT_TRUE(contains(errors->Last, "singular")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "use the")) << errors->Last;
+  vtkNew<vtkMatrix4x4> identity;
+  EXPECT_EQ(path->AddTransform(1.0, identity), 1);
+  EXPECT_EQ(path->GetNumberOfTransforms(), 1);
+}
+
+TEST(Robustness, StepBetweenExtremeKeysIsNamed)
+{
+  // Each key within the limit (cond 1e12), their step far beyond it (1e24).
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(path->AddTransform(0.0, diagonalMatrix(1e-6, 1, 1e6)), 1);
+  EXPECT_EQ(path->AddTransform(1e-7, diagonalMatrix(1e6, 1, 1e-6)), 0);
+  EXPECT_TRUE(contains(errors->Last, "t = 1e-07")) << errors->Last; // not 0.000000
+  EXPECT_TRUE(contains(errors->Last, "the key at t = 0")) << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "ill-conditioned")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "use the")) << errors->Last;
+  EXPECT_EQ(path->GetNumberOfTransforms(), 1);
+  // In MatrixLog the advice to switch is given, and only there.
+  vtkNew<vtkTransformInterpolatorLCT> matrixLog;
+  matrixLog->AddObserver(vtkCommand::ErrorEvent, errors);
+  matrixLog->SetParametrisationToMatrixLog();
+  vtkNew<vtkMatrix4x4> identity;
+  ASSERT_EQ(matrixLog->AddTransform(0.0, identity), 1);
+  EXPECT_EQ(matrixLog->AddTransform(1.0, diagonalMatrix(-2, -1, 1)), 0); // half turn, scale
+  EXPECT_TRUE(contains(errors->Last, "SetParametrisationToPolar")) << errors->Last;
+}
+
+TEST(Robustness, SplineOvershootThatOverflowsIsAnErrorNotInf)
+{
+  for (int type : { vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
+         vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION })
+  {
+    vtkNew<vtkTransformInterpolatorLCT> path;
+    path->SetInterpolationType(type);
+    vtkNew<ErrorCounter> errors;
+    path->AddObserver(vtkCommand::ErrorEvent, errors);
+    // Steps of 1.65e308 are representable; the overshoot between the middle keys (12.5 % above
+    // them for uniform Catmull-Rom) is not.
+    const double x[4] = { 0.0, 1.65e308, 1.65e308, 0.0 };
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<vtkMatrix4x4> m;
+      m->SetElement(0, 3, x[k]);
+      ASSERT_EQ(path->AddTransform(k, m), 1);
+    }
+    vtkNew<vtkMatrix4x4> out;
+    int failures = 0;
+    for (int i = 0; i <= 60; ++i)
+    {
+      out->SetElement(1, 3, 42.0);
+      if (path->InterpolateTransform(i / 20.0, out))
+      {
+        EXPECT_TRUE(allFinite(out)) << i;
+      }
+      else
+      {
+        ++failures;
+        EXPECT_EQ(out->GetElement(1, 3), 42.0);
+      }
+    }
+    EXPECT_GT(failures, 0); // the overshoot past 1.7e308 does overflow
+    EXPECT_EQ(errors->Count, failures);
+    EXPECT_TRUE(contains(errors->Last, "out of the range")) << errors->Last;
+  }
+}
+
+TEST(Robustness, BezierWithAMissingLogDoesNotCrash)
+{
+  // Keys identity and Translate(1e306) Scale(1e-3): the step's translation overflows, so the
+  // backward log of the Bezier tangent is missing (it was dereferenced).
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkMatrix4x4> identity;
+  vtkNew<vtkTransform> far;
+  far->Translate(1e306, 0, 0);
+  far->Scale(1e-3, 1e-3, 1e-3);
+  path->AddTransform(0.0, identity);
+  const int added = path->AddTransform(1.0, far);
+  path->SetInterpolationTypeToBezier();
+  vtkNew<vtkMatrix4x4> out;
+  for (double t : { 0.0, 0.5, 1.0 })
+  {
+    if (path->InterpolateTransform(t, out))
+    {
+      EXPECT_TRUE(allFinite(out)) << t;
+    }
+  }
+  EXPECT_TRUE(added == 1 || errors->Count > 0);
+}
+
+TEST(Robustness, TimesOutsideTheRangeAreClampedWithOneWarningAndInfinityIsAnError)
+{
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors, warnings;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  path->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkNew<vtkMatrix4x4> a, b, out;
+  b->SetElement(0, 3, 1.0);
+  path->AddTransform(0.0, a);
+  path->AddTransform(1.0, b);
+  EXPECT_EQ(path->InterpolateTransform(5.0, out), 1);
+  EXPECT_EQ(out->GetElement(0, 3), 1.0);
+  EXPECT_EQ(path->InterpolateTransform(-5.0, out), 1);
+  EXPECT_EQ(warnings->Count, 1);
+  EXPECT_TRUE(contains(warnings->Last, "clamped")) << warnings->Last;
+  out->SetElement(2, 3, 42.0);
+  EXPECT_EQ(path->InterpolateTransform(std::numeric_limits<double>::infinity(), out), 0);
+  EXPECT_EQ(out->GetElement(2, 3), 42.0);
+  EXPECT_EQ(errors->Count, 1);
+}
+
+TEST(Robustness, KeysInReverseOrderGiveTheSameCurve)
+{
+  vtkNew<vtkTransformInterpolatorLCT> forward, reverse;
+  const int n = 200;
+  for (int k = 0; k < n; ++k)
+  {
+    vtkNew<vtkTransform> a, b;
+    a->RotateZ(7.0 * k);
+    a->Translate(k, 0.1 * k * k, 0);
+    a->Scale(1.0 + 0.01 * k, 1.0, 1.0);
+    b->RotateZ(7.0 * (n - 1 - k));
+    b->Translate(n - 1 - k, 0.1 * (n - 1 - k) * (n - 1 - k), 0);
+    b->Scale(1.0 + 0.01 * (n - 1 - k), 1.0, 1.0);
+    ASSERT_EQ(forward->AddTransform(k, a), 1);
+    ASSERT_EQ(reverse->AddTransform(n - 1 - k, b), 1);
+  }
+  vtkNew<vtkMatrix4x4> x, y;
+  for (int i = 0; i <= 10 * (n - 1); ++i)
+  {
+    ASSERT_EQ(forward->InterpolateTransform(i / 10.0, x), 1);
+    ASSERT_EQ(reverse->InterpolateTransform(i / 10.0, y), 1);
+    for (int e = 0; e < 16; ++e)
+    {
+      ASSERT_EQ(x->GetElement(e / 4, e % 4), y->GetElement(e / 4, e % 4)) << i;
+    }
+  }
+  // Removing and re-adding in the middle, and replacing, keep it consistent too.
+  vtkNew<vtkTransform> middle;
+  middle->RotateZ(7.0 * 100);
+  middle->Translate(100, 0.1 * 100 * 100, 0);
+  middle->Scale(2.0, 1.0, 1.0);
+  reverse->RemoveTransform(100.0);
+  EXPECT_EQ(reverse->GetNumberOfTransforms(), n - 1);
+  reverse->AddTransform(100.0, middle);
+  forward->AddTransform(100.0, middle);
+  for (int i = 900; i <= 1100; ++i)
+  {
+    ASSERT_EQ(forward->InterpolateTransform(i / 10.0, x), 1);
+    ASSERT_EQ(reverse->InterpolateTransform(i / 10.0, y), 1);
+    EXPECT_EQ(x->GetElement(0, 0), y->GetElement(0, 0)) << i;
+  }
+}
+
+TEST(Robustness, CameraMessagesNameTheTrueCause)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> far;
+  far->SetFocalPoint(0, 0, 0);
+  far->SetPosition(1e200, 0, 0); // |p|^2 overflows: not "position at the focal point"
+  EXPECT_EQ(path->AddCamera(0.0, far), 0);
+  EXPECT_TRUE(contains(errors->Last, "exceeds 1e150")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "focal point equals")) << errors->Last;
+  vtkNew<vtkCamera> up;
+  up->SetPosition(0, 0, 1);
+  up->SetViewUp(0, 0, 1);
+  EXPECT_EQ(path->AddCamera(1e-7, up), 0);
+  EXPECT_TRUE(contains(errors->Last, "t = 1e-07")) << errors->Last;
+}
+
+TEST(Robustness, CameraOvershootThatLeavesTheRangeIsAnError)
+{
+  // Distances 1, 1e149, 1: the Spline's log-distance overshoot passes 1e150.
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  const double distance[4] = { 1.0, 1e149, 1e149, 1.0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkCamera> c;
+    c->SetFocalPoint(0, 0, 0);
+    c->SetPosition(0, 0, distance[k]);
+    c->SetClippingRange(0.1 * distance[k], 10.0 * distance[k]);
+    ASSERT_EQ(path->AddCamera(k, c), 1) << errors->Last;
+  }
+  vtkNew<vtkCamera> out;
+  int failures = 0;
+  for (int i = 0; i <= 60; ++i)
+  {
+    if (path->InterpolateCamera(i / 20.0, out))
+    {
+      EXPECT_TRUE(std::isfinite(out->GetDistance()));
+      EXPECT_LE(out->GetClippingRange()[1], 1e150);
+    }
+    else
+    {
+      ++failures;
+    }
+  }
+  EXPECT_GT(failures, 0);
+  EXPECT_TRUE(contains(errors->Last, "exceeds 1e150")) << errors->Last;
+}
+
+TEST(Robustness, PathMetricRefusesClosedPathsAndNaNPoints)
+{
+  vtkNew<vtkCameraPathMetric> metric;
+  vtkNew<ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.5, 0.2, 0.1);
+  points->InsertNextPoint(-0.3, 0.1, 0.4);
+  metric->SetPoints(points);
+  // A full orbit: every point ends where it started (it used to read 0 %).
+  vtkNew<vtkCollection> orbit;
+  for (int k = 0; k <= 12; ++k)
+  {
+    vtkNew<vtkCamera> c;
+    const double a = k * 2.0 * 3.14159265358979323846 / 12.0;
+    c->SetPosition(5.0 * std::sin(a), 0, 5.0 * std::cos(a));
+    orbit->AddItem(c);
+  }
+  EXPECT_EQ(metric->EvaluateCameras(orbit), 0);
+  EXPECT_TRUE(contains(errors->Last, "closed")) << errors->Last;
+  points->InsertNextPoint(std::nan(""), 0, 0);
+  EXPECT_EQ(metric->EvaluateCameras(orbit), 0);
+  EXPECT_TRUE(contains(errors->Last, "NaN")) << errors->Last;
+}
