@@ -215,7 +215,7 @@ struct vtkTransformInterpolatorLCT::Internals
   /// Why a step from `from` to `to` cannot be interpolated in P, or Ok.
   lct::Status StepStatus(const Eigen::Matrix4d& from, const Eigen::Matrix4d& to) const
   {
-    const Eigen::Matrix4d step = lct::inverseAffine(from) * to;
+    const Eigen::Matrix4d step = lct::relativeStep(from, to);
     if (!step.allFinite())
     {
       return lct::Status::OutOfRange;

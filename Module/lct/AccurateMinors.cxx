@@ -101,6 +101,96 @@ double accurateDeterminant(const Eigen::Matrix3d& m) noexcept
   return sum.value();
 }
 
+namespace
+{
+/// The exact adjugate of A: each entry a difference of two products, i.e. four doubles.
+struct ExactAdjugate
+{
+  double parts[3][3][4];
+
+  explicit ExactAdjugate(const Eigen::Matrix3d& m) noexcept
+  {
+    // adj(A)_ij = cofactor_ji = (-1)^(i+j) minor_ji; with cyclic indices the sign is built in.
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+        const double p = m(r0, c0) * m(r1, c1);
+        const double q = m(r0, c1) * m(r1, c0);
+        this->parts[i][j][0] = p;
+        this->parts[i][j][1] = std::fma(m(r0, c0), m(r1, c1), -p);
+        this->parts[i][j][2] = -q;
+        this->parts[i][j][3] = -std::fma(m(r0, c1), m(r1, c0), -q);
+      }
+    }
+  }
+
+  /// (adj A x)_i exactly split into 24 doubles and summed accurately.
+  template <typename Column>
+  double times(int i, const Column& x) const noexcept
+  {
+    CompensatedSum sum;
+    for (int l = 0; l < 3; ++l)
+    {
+      for (double part : this->parts[i][l])
+      {
+        const double p = part * x[l];
+        sum.add(p);
+        sum.add(std::fma(part, x[l], -p));
+      }
+    }
+    return sum.value();
+  }
+};
+} // namespace
+
+Eigen::Matrix3d accurateInverseTimes(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) noexcept
+{
+  const ExactAdjugate adjugate(a);
+  const double det = accurateDeterminant(a);
+  Eigen::Matrix3d out;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector3d column = b.col(k);
+    for (int i = 0; i < 3; ++i)
+    {
+      out(i, k) = adjugate.times(i, column) / det;
+    }
+  }
+  return out;
+}
+
+Eigen::Vector3d accurateInverseTimes(const Eigen::Matrix3d& a, const Eigen::Vector3d& v) noexcept
+{
+  const ExactAdjugate adjugate(a);
+  const double det = accurateDeterminant(a);
+  return Eigen::Vector3d(
+    adjugate.times(0, v) / det, adjugate.times(1, v) / det, adjugate.times(2, v) / det);
+}
+
+Eigen::Matrix4d accurateProduct(const Eigen::Matrix4d& a, const Eigen::Matrix4d& b) noexcept
+{
+  Eigen::Matrix4d out;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      double sum = 0.0, error = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        const double p = a(i, k) * b(k, j);
+        const double pe = std::fma(a(i, k), b(k, j), -p);
+        double se;
+        twoSum(sum, p, sum, se);
+        error += pe + se;
+      }
+      out(i, j) = sum + error;
+    }
+  }
+  return out;
+}
+
 double unitScaleDeterminant(const Eigen::Matrix3d& a) noexcept
 {
   const double det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) -

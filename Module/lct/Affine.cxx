@@ -1,9 +1,13 @@
 #include "lct/Affine.h"
 
+#include "lct/AccurateMinors.h"
 #include "lct/Conditioning.h"
 #include "lct/PolarDecomposition.h"
 
 #include <Eigen/LU>
+
+#include <cmath>
+#include <limits>
 
 namespace lct
 {
@@ -38,6 +42,66 @@ Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m)
   const Eigen::Matrix3d inverseLinear =
     scaledByPowerOfTwo(Eigen::Matrix3d(scaledByPowerOfTwo(linear, -e).inverse()), -e);
   return makeAffine(inverseLinear, -(inverseLinear * m.topRightCorner<3, 1>()));
+}
+
+double accurateLogDeterminant(const Eigen::Matrix4d& m)
+{
+  const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
+  const int e = unitScaleExponent(a);
+  return std::log(std::abs(accurateDeterminant(scaledByPowerOfTwo(a, -e)))) +
+    3.0 * e * 0.69314718055994530942;
+}
+
+bool determinantMatches(const Eigen::Matrix4d& result, double expected)
+{
+  const Eigen::Matrix3d a = result.topLeftCorner<3, 3>();
+  const int e = unitScaleExponent(a);
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(a, -e);
+  const double det = std::abs(accurateDeterminant(unit));
+  const double got = std::log(det) + 3.0 * e * 0.69314718055994530942;
+  const double representable = 2.0 * std::numeric_limits<double>::epsilon() *
+    (accurateCofactors(unit).cwiseAbs().cwiseProduct(unit.cwiseAbs())).sum() / det;
+  return std::abs(got - expected) <= 1e-9 * (1.0 + std::abs(expected)) + representable;
+}
+
+bool needsAccurateProducts(const Eigen::Matrix4d& m)
+{
+  // Subnormal entries carry fewer bits than the products assume.
+  const double smallest = m.topLeftCorner<3, 3>()
+                            .cwiseAbs()
+                            .unaryExpr([](double x) { return x == 0.0 ? 1.0 : x; })
+                            .minCoeff();
+  if (smallest < std::numeric_limits<double>::min())
+  {
+    return true;
+  }
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(
+    Eigen::Matrix3d(m.topLeftCorner<3, 3>()), -unitScaleExponent(m.topLeftCorner<3, 3>()));
+  const double det = unitScaleDeterminant(unit);
+  const double norm = unit.norm();
+  return !(det > 0.0 && norm * norm * norm <= 1e3 * det);
+}
+
+Eigen::Matrix4d productWith(const Eigen::Matrix4d& r, const Eigen::Matrix4d& x, bool accurate)
+{
+  return accurate ? accurateProduct(r, x) : Eigen::Matrix4d(r * x);
+}
+
+Eigen::Matrix4d relativeStep(const Eigen::Matrix4d& reference, const Eigen::Matrix4d& m)
+{
+  if (!needsAccurateProducts(reference))
+  {
+    return inverseAffine(reference) * m;
+  }
+  const Eigen::Matrix3d a = reference.topLeftCorner<3, 3>();
+  const int e = unitScaleExponent(a);
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(a, -e);
+  // (2^e U)^-1 B = 2^-e U^-1 B, and U^-1 (t_m - t_r) for the translation.
+  const Eigen::Vector3d difference = m.topRightCorner<3, 1>() - reference.topRightCorner<3, 1>();
+  return makeAffine(
+    scaledByPowerOfTwo(
+      Eigen::Matrix3d(accurateInverseTimes(unit, Eigen::Matrix3d(m.topLeftCorner<3, 3>()))), -e),
+    scaledByPowerOfTwo(Eigen::Vector3d(accurateInverseTimes(unit, difference)), -e));
 }
 
 } // namespace lct

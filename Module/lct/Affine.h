@@ -34,6 +34,31 @@ inline Eigen::Matrix4d makeAffine(const Eigen::Matrix3d& linear, const Eigen::Ve
 /// magnitude. Entries overflow to Inf when the inverse is out of range (callers check).
 VTKLCT_EXPORT Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m);
 
+/// R^-1 M, the step from key R to key M of the relative form. For an ill-conditioned R the plain
+/// product is off by eps cond(R) relative; there the step is formed from exact minors
+/// (lct/AccurateMinors.h). Entries overflow to Inf when the step is out of range.
+VTKLCT_EXPORT Eigen::Matrix4d relativeStep(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& m);
+
+/// Whether the plain products with this map lose digits: ||A||_F^3 / det A > 1e3 (an upper bound
+/// of cond(A)^2 times 5.2, and at least cond(A)). relativeStep and the relative form use exact
+/// minors and compensated products then.
+VTKLCT_EXPORT bool needsAccurateProducts(const Eigen::Matrix4d& m);
+
+/// log |det A| of the linear part to a few ulps at any magnitude and condition (exact minors).
+VTKLCT_EXPORT double accurateLogDeterminant(const Eigen::Matrix4d& m);
+
+/// Whether log |det A| of a computed result is `expected` within 1e-9 plus what rounding its
+/// entries to double can move it (2 eps sum_ij |cofactor_ij a_ij| / |det A|, first order). The
+/// relative form between ill-conditioned keys can lose the result's smallest stretch in its
+/// intermediates (steps of condition cond(K_r) cond(K_i)); its determinant, prod det(K_i)^(w_i)
+/// for every scheme, shows it.
+VTKLCT_EXPORT bool determinantMatches(const Eigen::Matrix4d& result, double expectedLogDeterminant);
+
+/// R X, with compensated dot products when needsAccurateProducts(R) (lct/AccurateMinors.h).
+VTKLCT_EXPORT Eigen::Matrix4d productWith(
+  const Eigen::Matrix4d& r, const Eigen::Matrix4d& x, bool accurate);
+
 } // namespace lct
 
 #endif

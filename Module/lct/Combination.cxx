@@ -31,18 +31,23 @@ std::size_t largestWeight(const double* weights, std::size_t count) noexcept
 
 namespace
 {
-/// exp(sum_i w_i log(X T_i)) with X = I or R^-1.
+/// exp(sum_i w_i log(R^-1 T_i)), or exp(sum_i w_i log T_i) without a reference R.
 Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4d* keys,
-  std::size_t count, const Eigen::Matrix4d& leftFactor, Parametrisation p)
+  std::size_t count, const Eigen::Matrix4d* reference, Parametrisation p)
 {
   LogCoords sum = LogCoords::Zero();
   for (std::size_t i = 0; i < count; ++i)
   {
-    if (weights[i] == 0.0)
+    if (weights[i] == 0.0 || (reference && &keys[i] == reference))
     {
-      continue;
+      continue; // log(R^-1 R) = 0 exactly
     }
-    const auto logKey = logarithm(leftFactor * keys[i], p);
+    const Eigen::Matrix4d step = reference ? relativeStep(*reference, keys[i]) : keys[i];
+    if (!step.allFinite())
+    {
+      return Result<Eigen::Matrix4d>::failure(Status::OutOfRange);
+    }
+    const auto logKey = logarithm(step, p);
     if (!logKey)
     {
       return Result<Eigen::Matrix4d>::failure(logKey.status);
@@ -56,7 +61,7 @@ Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4
 Result<Eigen::Matrix4d> combine(
   const double* weights, const Eigen::Matrix4d* keys, std::size_t count, Parametrisation p)
 {
-  return combineTimes(weights, keys, count, Eigen::Matrix4d::Identity(), p);
+  return combineTimes(weights, keys, count, nullptr, p);
 }
 
 Result<Eigen::Matrix4d> combineRelative(const double* weights, const Eigen::Matrix4d* keys,
@@ -71,10 +76,32 @@ Result<Eigen::Matrix4d> combineRelative(const double* weights, const Eigen::Matr
   {
     return Result<Eigen::Matrix4d>::failure(valid);
   }
-  auto relative = combineTimes(weights, keys, count, inverseAffine(keys[reference]), p);
-  if (relative)
+  auto relative = combineTimes(weights, keys, count, &keys[reference], p);
+  if (!relative)
   {
-    relative.value = keys[reference] * relative.value;
+    return relative;
+  }
+  const bool accurate = needsAccurateProducts(keys[reference]);
+  relative.value = productWith(keys[reference], relative.value, accurate);
+  if (!relative.value.allFinite())
+  {
+    return Result<Eigen::Matrix4d>::failure(Status::OutOfRange);
+  }
+  // Between ill-conditioned keys the intermediates may lose the smallest stretch: check the
+  // determinant, prod det(K_i)^(w_i), as lct::KeyLogs does.
+  bool involved = accurate;
+  double expected = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (weights[i] != 0.0)
+    {
+      involved = involved || needsAccurateProducts(keys[i]);
+      expected += weights[i] * accurateLogDeterminant(keys[i]);
+    }
+  }
+  if (involved && !determinantMatches(relative.value, expected))
+  {
+    return Result<Eigen::Matrix4d>::failure(Status::InaccurateResult);
   }
   return relative;
 }

@@ -86,7 +86,6 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
   for (int r = first; r <= last; ++r)
   {
     Window w;
-    const Eigen::Matrix4d inverse = inverseAffine(edited(r));
     for (int slot = 0; slot <= 2 * kReach; ++slot)
     {
       const int i = r + slot - kReach;
@@ -105,7 +104,15 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
         w.logs[slot] = old.logs[oldI - oldR + kReach];
         continue;
       }
-      const Eigen::Matrix4d step = inverse * edited(i);
+      if (i == r)
+      {
+        // log(M^-1 M) = 0 exactly: keys are reproduced at their times however ill-conditioned
+        // (the computed M^-1 M is I only to eps cond(M)).
+        w.logs[slot].setZero();
+        w.status[slot] = Status::Ok;
+        continue;
+      }
+      const Eigen::Matrix4d step = relativeStep(edited(r), edited(i));
       // A step that overflows is out of range, not "NaN or Inf in the input".
       const auto l = step.allFinite() ? logarithm(step, this->P)
                                       : Result<LogCoords>::failure(Status::OutOfRange);
@@ -129,15 +136,21 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
       this->Windows.insert(this->Windows.begin() + index, Window());
       this->Absolute.insert(this->Absolute.begin() + index, LogCoords::Zero());
       this->AbsoluteStatus.insert(this->AbsoluteStatus.begin() + index, Status::InvalidArgument);
+      this->Accurate.insert(this->Accurate.begin() + index, needsAccurateProducts(*m));
+      this->LogDeterminant.insert(this->LogDeterminant.begin() + index, accurateLogDeterminant(*m));
       break;
     case Edit::Replace:
       this->Matrices[index] = *m;
+      this->Accurate[index] = needsAccurateProducts(*m);
+      this->LogDeterminant[index] = accurateLogDeterminant(*m);
       break;
     case Edit::Erase:
       this->Matrices.erase(this->Matrices.begin() + index);
       this->Windows.erase(this->Windows.begin() + index);
       this->Absolute.erase(this->Absolute.begin() + index);
       this->AbsoluteStatus.erase(this->AbsoluteStatus.begin() + index);
+      this->Accurate.erase(this->Accurate.begin() + index);
+      this->LogDeterminant.erase(this->LogDeterminant.begin() + index);
       break;
   }
   this->commitWindows(first, scratch);
@@ -199,7 +212,8 @@ Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix
   {
     return m.status;
   }
-  const Eigen::Matrix4d result = this->Matrices[reference] * m.value;
+  const Eigen::Matrix4d result =
+    productWith(this->Matrices[reference], m.value, this->Accurate[reference]);
   if (!result.allFinite())
   {
     return Status::OutOfRange;
@@ -208,7 +222,35 @@ Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix
   return Status::Ok;
 }
 
-Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) const
+Status KeyLogs::checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) const
+{
+  bool involved = false;
+  double expected = 0.0;
+  for (int j = 0; j < w.count; ++j)
+  {
+    involved = involved || this->Accurate[w.key[j]];
+    expected += w.weight[j] * this->LogDeterminant[w.key[j]];
+  }
+  return !involved || determinantMatches(out, expected) ? Status::Ok : Status::InaccurateResult;
+}
+
+Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& result) const
+{
+  Eigen::Matrix4d out;
+  const Status status = this->combineRelativeUnchecked(w, out);
+  if (status != Status::Ok)
+  {
+    return status;
+  }
+  const Status check = this->checkResult(w, out);
+  if (check == Status::Ok)
+  {
+    result = out;
+  }
+  return check;
+}
+
+Status KeyLogs::combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d& out) const
 {
   int a = -1;
   int b = -1;
@@ -238,10 +280,11 @@ Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) con
   const double x = gap / kHandOver;
   const double s = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
   // R_a (R_a^-1 R_b)^s: at s = 1/2 the same point from either side.
-  const auto blend = matrixPower(inverseAffine(out) * other, s);
+  const bool accurate = this->Accurate[w.key[a]] || this->Accurate[w.key[b]];
+  const auto blend = matrixPower(relativeStep(out, other), s);
   if (blend)
   {
-    const Eigen::Matrix4d blended = out * blend.value;
+    const Eigen::Matrix4d blended = productWith(out, blend.value, accurate);
     if (blended.allFinite())
     {
       out = blended;
@@ -262,11 +305,16 @@ Status KeyLogs::combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) con
     sum += w.weight[j] * this->Absolute[w.key[j]];
   }
   const auto m = exponential(sum, this->P);
-  if (m)
+  if (!m)
+  {
+    return m.status;
+  }
+  const Status check = this->checkResult(w, m.value);
+  if (check == Status::Ok)
   {
     out = m.value;
   }
-  return m.status;
+  return check;
 }
 
 } // namespace lct

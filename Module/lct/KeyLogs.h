@@ -104,12 +104,20 @@ private:
   void commitWindows(int first, const std::vector<Window>& scratch);
   void updateAbsoluteFrom(int index);
   Status combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const;
+  Status combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d& out) const;
 
   Parametrisation P;
   std::vector<Eigen::Matrix4d> Matrices;
   std::vector<Window> Windows;
   std::vector<LogCoords> Absolute;
   std::vector<Status> AbsoluteStatus;
+  /// Per key: lct::needsAccurateProducts (ill-conditioned keys get compensated products, and
+  /// results that involve them a check of their determinant against prod det(K_i)^(w_i)), and
+  /// log |det| of the linear part.
+  std::vector<char> Accurate;
+  std::vector<double> LogDeterminant;
+  /// OK, or InaccurateResult when a result involving ill-conditioned keys fails that check.
+  Status checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) const;
 };
 
 } // namespace lct

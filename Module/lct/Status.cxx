@@ -31,6 +31,10 @@ const char* describe(Status status) noexcept
       return "the linear part's eigenvalue magnitudes lie outside 1e-135 .. 1e135, the range of "
              "the "
              "MatrixLog parametrisation (the Polar one takes any finite magnitude)";
+    case Status::InaccurateResult:
+      return "the result cannot be computed accurately in double precision from these keys (the "
+             "relative form between ill-conditioned keys loses the smallest stretch); refused "
+             "rather than returned inaccurate";
     case Status::NumericalFailure:
       return "an eigensolver did not converge on this input (a defect of vtkLCT: please report "
              "the matrix)";

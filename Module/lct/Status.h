@@ -25,6 +25,7 @@ enum class Status
   NoRealLogarithm,     ///< a negative real eigenvalue (or too close to one for an accurate log)
   OutOfRange,          ///< the result overflows (or underflows to a singular map) in double
   MagnitudeOutOfRange, ///< MatrixLog only: eigenvalue magnitudes beyond 2^+-450
+  InaccurateResult,    ///< the result cannot be computed accurately in double from these inputs
   NumericalFailure,    ///< an eigensolver did not converge (a defect: please report the input)
   InvalidArgument      ///< sizes, counts or indices that make no sense
 };
