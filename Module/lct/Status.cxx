@@ -16,7 +16,9 @@ const char* describe(Status status) noexcept
     case Status::NegativeDeterminant:
       return "the determinant of the linear part is negative (a reflection is outside Aff+(3))";
     case Status::Singular:
-      return "the linear part is singular (it flattens space: a zero scale or a zero determinant)";
+      return "the linear part is singular (it flattens space: a zero scale or a zero determinant) "
+             "and has no logarithm; to grow an object from nothing, start from a tiny positive "
+             "scale such as 1e-6";
     case Status::IllConditioned:
       return "the linear part is too ill-conditioned (the ratio of its largest to its smallest "
              "stretch exceeds 1e13, beyond which double precision cannot represent the smallest "
