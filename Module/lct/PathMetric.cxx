@@ -27,8 +27,8 @@ PathMetricResult measurePath(
     const Eigen::Vector4d p(points[i].x(), points[i].y(), points[i].z(), 1.0);
     double cameraLength = 0.0;
     double screenLength = 0.0;
-    Eigen::Vector3d firstCamera, lastCamera;
-    Eigen::Vector2d firstScreen, lastScreen;
+    Eigen::Vector3d firstCamera = Eigen::Vector3d::Zero(), lastCamera = Eigen::Vector3d::Zero();
+    Eigen::Vector2d firstScreen = Eigen::Vector2d::Zero(), lastScreen = Eigen::Vector2d::Zero();
     for (std::size_t s = 0; s < samples; ++s)
     {
       const Eigen::Vector3d c = (views[s] * p).head<3>();
