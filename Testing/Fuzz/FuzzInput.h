@@ -24,6 +24,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -32,6 +33,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace lct_fuzz
 {
@@ -82,11 +84,11 @@ inline bool Known(const char* id, bool matches)
 {
   if (matches)
   {
-    static std::string reported;
-    const std::string tag = std::string("[") + id + "]";
-    if (reported.find(tag) == std::string::npos)
+    // Compared by address, not content: string comparisons would feed libFuzzer's dictionary.
+    static std::vector<const char*> reported;
+    if (std::find(reported.begin(), reported.end(), id) == reported.end())
     {
-      reported += tag;
+      reported.push_back(id);
       std::fprintf(stderr, "note: skipping known defect %s (see Testing/Fuzz/README.md)\n", id);
     }
   }
