@@ -77,6 +77,19 @@ inline bool Verbose()
   return verbose;
 }
 
+/// Under LCT_FUZZ_PRINT, prints one step of a target's operation sequence.
+#define LCT_FUZZ_TRACE(what)                                                                       \
+  do                                                                                               \
+  {                                                                                                \
+    if (::lct_fuzz::Verbose())                                                                     \
+    {                                                                                              \
+      std::ostringstream lct_fuzz_trace;                                                           \
+      lct_fuzz_trace.precision(17);                                                                \
+      lct_fuzz_trace << what;                                                                      \
+      std::fprintf(stderr, "> %s\n", lct_fuzz_trace.str().c_str());                                \
+    }                                                                                              \
+  } while (false)
+
 /// A defect in Module/ or Examples/ that a target skips until it is fixed (each one is described
 /// in the fuzzing report and has a regression input in the target's corpus). Returns `matches`,
 /// and says once per process that the skip was taken, so a skipped defect stays visible.
