@@ -13,6 +13,7 @@
 #include "lct/MatrixLogParametrisation.h"
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 namespace lct_fuzz
 {
@@ -42,6 +43,31 @@ inline bool KnownCubic(const Eigen::Matrix3d& a)
   const double q = -b.determinant();
   const double thirdP = p / 3.0;
   return Known("D2", !std::isfinite(0.25 * q * q + thirdP * thirdP * thirdP));
+}
+
+/// Whether a key is "tame" for the MatrixLog targets that cannot predict every matrix the library
+/// derives from their keys (relative products, weighted sums of logs, the hand-over blend). D1/D2
+/// need extreme linear parts: coefficients of the characteristic polynomial beyond ~1e51 or a
+/// traceless part below ~1e-103. With singular values in [1e-10, 1e10], condition <= 1e8 and every
+/// non-zero entry at least 1e-30 (so that two keys differ by at least ulp(1e-30) where they
+/// differ), derived matrices stay far from both, and such keys cannot meet them.
+inline bool Tame(const Eigen::Matrix4d& m)
+{
+  if (lct::validateAffine(m) != lct::Status::Ok)
+  {
+    return false; // (KeyLogs takes relative logs even of invalid matrices, e.g. camera matrices)
+  }
+  const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
+  for (int i = 0; i < 9; ++i)
+  {
+    const double x = std::abs(a(i / 3, i % 3));
+    if (x != 0.0 && !(x >= 1e-30))
+    {
+      return false;
+    }
+  }
+  const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::Matrix3d>(a).singularValues();
+  return s[0] <= 1e10 && s[2] >= 1e-10 && s[0] <= 1e8 * s[2];
 }
 
 /// Whether lct::matrixExp(c) would meet a D1/D2 trigger.
