@@ -15,6 +15,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkOutputWindow.h"
@@ -582,6 +583,8 @@ public:
     static QuietOutputWindow* window = [] {
       QuietOutputWindow* w = QuietOutputWindow::New();
       vtkOutputWindow::SetInstance(w);
+      // VTK 9 also sends unobserved errors to vtkLogger, which prints to stderr.
+      vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
       return w;
     }();
     return window;
