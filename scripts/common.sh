@@ -14,18 +14,33 @@ LCT_REQUIRED_PACKAGES=(
   assimp-testmodels nlohmann-json3-dev
 )
 
+# The clang toolchain of the sanitizer pass (scripts/test) and the fuzz targets (scripts/fuzz):
+# libclang-rt-14-dev holds the libFuzzer / ASan / UBSan runtimes and FuzzedDataProvider.h (clang
+# only recommends it, so it is named), llvm-14 the llvm-symbolizer for readable stack traces.
+# shellcheck disable=SC2034 # used by the scripts that source this file
+LCT_CLANG_PACKAGES=(clang-14 libclang-rt-14-dev llvm-14)
+# shellcheck disable=SC2034
+LCT_CLANG_CC=clang-14
+# shellcheck disable=SC2034
+LCT_CLANG_CXX=clang++-14
+# ASan finds llvm-symbolizer on PATH only under that name; llvm-14 installs it here.
+export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-/usr/lib/llvm-14/bin/llvm-symbolizer}"
+
 lct_log() { printf '==> %s\n' "$*" >&2; }
 
-# Install missing packages (as root) or print the command to do it (otherwise, then exit 1).
+# ensure_packages [extra packages...]
+# Install missing packages (the project's and the extra ones) as root, or print the command to do
+# it (otherwise, then exit 1).
 ensure_packages() {
   if ! command -v dpkg-query >/dev/null 2>&1; then
     lct_log "dpkg-query not found (not Debian?): not checking packages"
     return 0
   fi
+  local wanted=("${LCT_REQUIRED_PACKAGES[@]}" "$@")
   local installed missing=() p
-  installed="$(dpkg-query -W -f='${Package} ${Status}\n' "${LCT_REQUIRED_PACKAGES[@]}" 2>/dev/null |
+  installed="$(dpkg-query -W -f='${Package} ${Status}\n' "${wanted[@]}" 2>/dev/null |
     awk '$NF == "installed" { print $1 }' || true)"
-  for p in "${LCT_REQUIRED_PACKAGES[@]}"; do
+  for p in "${wanted[@]}"; do
     grep -qxF "$p" <<<"$installed" || missing+=("$p")
   done
   ((${#missing[@]} == 0)) && return 0

@@ -1,0 +1,248 @@
+// Shared by FuzzRenderKeysJson.cxx and FuzzRenderKeysPvcc.cxx: what Examples/lct-render.cxx does
+// with the keys its readers (Examples/RenderKeys.h) return, up to the first frame that needs a
+// display. lct-render.cxx keeps this in main(), so it is restated here, following that file:
+// the camera keys go into a vtkCameraInterpolatorLCT and each prop track into a
+// vtkTransformInterpolatorLCT (a refused key is a clean input error), the path metric is taken
+// over [tmin, tmax], and frame i of N is interpolated at tmin + (tmax - tmin) i / (N - 1).
+//
+// Property: keys the reader accepted and the interpolators accepted render: every frame
+// interpolates (lct-render would stop with "interpolating ... failed" after writing frames) and
+// every interpolated camera parameter and prop matrix is finite.
+#ifndef lct_fuzz_FuzzRenderKeys_h
+#define lct_fuzz_FuzzRenderKeys_h
+
+#include "FuzzInput.h"
+#include "RenderKeys.h"
+
+#include "vtkCameraInterpolatorLCT.h"
+#include "vtkCameraPathMetric.h"
+#include "vtkTransformInterpolatorLCT.h"
+
+#include "lct/CameraKey.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+#include <iostream>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+namespace lct_fuzz
+{
+
+/// RenderKeys' parser warns on std::cerr about unknown keys; keep that out of the fuzzer's log.
+inline void SilenceStdErr()
+{
+  struct NullBuffer : std::streambuf
+  {
+    int overflow(int c) override { return c; }
+  };
+  static NullBuffer null;
+  static std::streambuf* const previous = std::cerr.rdbuf(&null);
+  (void)previous;
+}
+
+/// lct-render's name -> interpolation type (its CameraType()).
+inline int InterpolationType(const std::string& name)
+{
+  if (name == "linear")
+  {
+    return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR;
+  }
+  if (name == "bspline")
+  {
+    return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE;
+  }
+  if (name == "subdivision")
+  {
+    return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
+  }
+  return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE;
+}
+
+inline lct::CameraParameters ParametersOf(vtkCamera* camera)
+{
+  lct::CameraParameters c;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.focalPoint.data());
+  camera->GetViewUp(c.viewUp.data());
+  c.parallelProjection = camera->GetParallelProjection() != 0;
+  c.viewAngle = camera->GetViewAngle();
+  c.parallelScale = camera->GetParallelScale();
+  camera->GetWindowCenter(c.windowCenter.data());
+  camera->GetViewShear(c.viewShear.data());
+  camera->GetClippingRange(c.clippingRange.data());
+  return c;
+}
+
+/// The checks on what a reader returned, then lct-render's use of it.
+inline void RenderKeysLikeLctRender(const RenderKeys::Keys& keys)
+{
+  // What the reader promises.
+  LCT_FUZZ_CHECK(
+    keys.Camera.size() >= 2, "the reader returned " << keys.Camera.size() << " camera keys");
+  LCT_FUZZ_CHECK(RenderKeys::IsInterpolationName(keys.Interpolation),
+    "the reader returned interpolation \"" << keys.Interpolation << "\"");
+  for (const auto& key : keys.Camera)
+  {
+    LCT_FUZZ_CHECK(std::isfinite(key.Time) && key.Camera, "a camera key without finite time");
+  }
+  for (const auto& [name, track] : keys.Props)
+  {
+    LCT_FUZZ_CHECK(!track.Keys.empty(), "props." << name << " has no keys");
+    LCT_FUZZ_CHECK(
+      track.Interpolation.empty() || RenderKeys::IsInterpolationName(track.Interpolation),
+      "props." << name << " interpolation \"" << track.Interpolation << "\"");
+    for (const auto& key : track.Keys)
+    {
+      LCT_FUZZ_CHECK(std::isfinite(key.Time) && AllFinite(key.Matrix.data(), 16) &&
+          key.Matrix[12] == 0.0 && key.Matrix[13] == 0.0 && key.Matrix[14] == 0.0 &&
+          key.Matrix[15] == 1.0,
+        key.Path << ": the reader returned a non-finite or non-affine matrix "
+                 << Show(key.Matrix.data(), 16));
+    }
+  }
+
+  ErrorObserver errors;
+  vtkNew<vtkCameraInterpolatorLCT> cameraPath;
+  errors.Observe(cameraPath);
+  cameraPath->SetInterpolationType(InterpolationType(keys.Interpolation));
+  cameraPath->SetConsistentRotation(keys.ConsistentRotation);
+  double tmin = keys.Camera.front().Time, tmax = tmin;
+  for (const auto& key : keys.Camera)
+  {
+    tmin = std::min(tmin, key.Time);
+    tmax = std::max(tmax, key.Time);
+    const auto k = lct::toCameraKey(ParametersOf(key.Camera));
+    const lct::CameraParameters p = ParametersOf(key.Camera);
+    // KNOWN: D16 (see FuzzCameraInterpolator.cxx): near / far over the distance overflows in
+    // lct::toCameraKey.
+    if (k &&
+      Known("D16",
+        !AllFinite(k.value.channels) || !(p.clippingRange[1] <= 1e300) ||
+          !(p.clippingRange[0] >= 1e-300)))
+    {
+      return;
+    }
+    if (!cameraPath->AddCamera(key.Time, key.Camera))
+    {
+      return; // lct-render: "... is degenerate (rejected by vtkCameraInterpolatorLCT: ...)"
+    }
+  }
+  // KNOWN: D11 (see FuzzCorePieces.cxx): key times whose span overflows give NaN curve weights
+  // (and undefined behaviour for Subdivision). It breaks lct-render too: its frame time
+  // tmin + (tmax - tmin) i / (N - 1) is Inf * 0 = NaN at i = 0, so the first frame fails.
+  if (Known("D11", !std::isfinite(tmax - tmin)))
+  {
+    return;
+  }
+
+  struct Track
+  {
+    std::string Name;
+    vtkSmartPointer<vtkTransformInterpolatorLCT> Path;
+    double Largest = 0.0;
+  };
+  std::vector<Track> tracks;
+  for (const auto& [name, track] : keys.Props)
+  {
+    Track t;
+    t.Name = name;
+    t.Path = vtkSmartPointer<vtkTransformInterpolatorLCT>::New();
+    errors.Observe(t.Path);
+    const std::string scheme =
+      !track.Interpolation.empty() ? track.Interpolation : keys.Interpolation;
+    t.Path->SetInterpolationType(InterpolationType(scheme)); // same enum values 0..3
+    t.Path->SetConsistentRotation(track.ConsistentRotation);
+    double lo = track.Keys.front().Time, hi = lo;
+    for (const auto& key : track.Keys)
+    {
+      lo = std::min(lo, key.Time);
+      hi = std::max(hi, key.Time);
+      vtkNew<vtkMatrix4x4> m;
+      m->DeepCopy(key.Matrix.data());
+      if (!t.Path->AddTransform(key.Time, m))
+      {
+        return; // lct-render: "... is not a usable transform (rejected by ...)"
+      }
+      for (double x : key.Matrix)
+      {
+        t.Largest = std::max(t.Largest, std::abs(x));
+      }
+    }
+    if (Known("D11", !std::isfinite(hi - lo)))
+    {
+      return;
+    }
+    tracks.push_back(t);
+  }
+
+  // The path metric over a few scene points (lct-render uses the scene's mesh points).
+  {
+    vtkNew<vtkPoints> points;
+    for (int i = 0; i < 8; ++i)
+    {
+      points->InsertNextPoint((i & 1) - 0.5, ((i >> 1) & 1) * 0.8, ((i >> 2) & 1) - 0.5);
+    }
+    vtkNew<vtkCameraPathMetric> metric;
+    metric->SetPoints(points);
+    metric->SetNumberOfSamples(12);
+    if (metric->EvaluateInterpolator(cameraPath, tmin, tmax))
+    {
+      LCT_FUZZ_CHECK(std::isfinite(metric->GetCameraSpaceExcess()) &&
+          std::isfinite(metric->GetScreenSpaceExcess()),
+        "vtkCameraPathMetric returned 1 with a non-finite excess");
+    }
+  }
+
+  constexpr int N = 12;
+  auto frameTime = [&](int i) { return N > 1 ? tmin + (tmax - tmin) * i / (N - 1) : tmin; };
+  double largestChannel = 0.0;
+  for (const auto& key : keys.Camera)
+  {
+    const auto k = lct::toCameraKey(ParametersOf(key.Camera));
+    largestChannel = std::max(largestChannel, k.value.channels.cwiseAbs().maxCoeff());
+  }
+  for (int i = 0; i < N; ++i)
+  {
+    const double t = frameTime(i);
+    for (const Track& track : tracks)
+    {
+      vtkNew<vtkMatrix4x4> k;
+      LCT_FUZZ_CHECK(track.Path->InterpolateTransform(t, k),
+        "interpolating props." << track.Name << " at t = " << t << " failed: " << errors.Last);
+      const bool finite = AllFinite(k->GetData(), 16);
+      // KNOWN: D10 (see FuzzCorePieces.cxx): the reference key multiplied back overflows.
+      if (!finite && Known("D10", track.Largest > 1e290))
+      {
+        continue;
+      }
+      LCT_FUZZ_CHECK(finite,
+        "props." << track.Name << " at t = " << t << " is not finite: " << Show(k->GetData(), 16));
+    }
+    vtkNew<vtkCamera> camera;
+    LCT_FUZZ_CHECK(cameraPath->InterpolateCamera(t, camera),
+      "interpolating the camera at t = " << t << " failed: " << errors.Last);
+    const lct::CameraParameters c = ParametersOf(camera);
+    const bool finite = AllFinite(c.position) && AllFinite(c.focalPoint) && AllFinite(c.viewUp) &&
+      std::isfinite(c.viewAngle) && std::isfinite(c.parallelScale) && AllFinite(c.windowCenter) &&
+      AllFinite(c.viewShear) && AllFinite(c.clippingRange);
+    // KNOWN: D17 (see FuzzCameraInterpolator.cxx): log channels exponentiated unchecked.
+    if (!finite && Known("D17", largestChannel >= 650.0))
+    {
+      continue;
+    }
+    LCT_FUZZ_CHECK(finite,
+      "the camera at t = " << t << " is not finite: position " << Show(c.position.transpose())
+                           << ", clipping " << Show(c.clippingRange.transpose()));
+  }
+}
+
+} // namespace lct_fuzz
+
+#endif

@@ -1,0 +1,569 @@
+// Fuzz target: vtkTransformInterpolatorLCT with arbitrary key sequences. Each input is a sequence
+// of AddTransform (vtkMatrix4x4 / vtkTransform / vtkProp3D / null; new times, the time of an
+// existing key to replace it, neighbouring doubles, NaN/Inf), RemoveTransform, SetBezierControls,
+// interpolation type (including out-of-range values), parametrisation, ConsistentRotation and
+// Initialize, interleaved with InterpolateTransform into all three output types at key times,
+// between them, outside the range, at NaN and +-Inf.
+//
+// Properties: no crash, sanitizer report or hang; the key bookkeeping matches a shadow model
+// (count, time range, which calls succeed); a call returning 1 reports no error and its output is
+// finite and affine; a call returning 0 reported an error and left the output untouched; a key
+// time is reproduced by the interpolating types.
+#include "FuzzInput.h"
+#include "FuzzMatrixLogGuards.h"
+
+#include "vtkLogTransform.h"
+#include "vtkTransformInterpolatorLCT.h"
+
+#include "lct/Affine.h"
+#include "lct/Parametrisation.h"
+
+#include "vtkAssembly.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+
+#include <Eigen/SVD>
+
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+
+namespace
+{
+using lct_fuzz::AllFinite;
+using lct_fuzz::Show;
+using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
+
+Eigen::Matrix4d FromVtk(vtkMatrix4x4* m)
+{
+  return RowMajor4(Eigen::Map<const RowMajor4>(m->GetData()));
+}
+
+void ToVtk(const Eigen::Matrix4d& m, vtkMatrix4x4* out)
+{
+  const RowMajor4 r = m;
+  out->DeepCopy(r.data());
+}
+
+/// Singular values in [1e-30, 1e30] within `condition`: a key whose reproduction can be checked.
+bool WellConditioned(const Eigen::Matrix4d& m, double condition)
+{
+  if (lct::validateAffine(m) != lct::Status::Ok)
+  {
+    return false;
+  }
+  const Eigen::Vector3d s =
+    Eigen::JacobiSVD<Eigen::Matrix3d>(Eigen::Matrix3d(m.topLeftCorner<3, 3>())).singularValues();
+  return s[2] >= 1e-30 && s[0] <= 1e30 && s[0] <= condition * s[2] &&
+    m.topRightCorner<3, 1>().norm() <= 1e30;
+}
+
+// KNOWN: D1, D2 (Testing/Fuzz/README.md). In MatrixLog the interpolator takes logs and exps of
+// matrices derived from the keys, which cannot be predicted cheaply, so MatrixLog is exercised
+// with tame keys only (lct_fuzz::Tame); Polar gets every key. Invalid keys are refused before
+// any log is taken, so they always go in (to test the refusal).
+bool Tame(const Eigen::Matrix4d& m)
+{
+  return lct::validateAffine(m) != lct::Status::Ok || lct_fuzz::Tame(m);
+}
+
+/// What the interpolator should hold.
+struct ShadowKey
+{
+  Eigen::Matrix4d Matrix;
+  bool HasIncoming = false;
+  bool HasOutgoing = false;
+  Eigen::Matrix4d Incoming;
+  Eigen::Matrix4d Outgoing;
+};
+
+class Session
+{
+public:
+  explicit Session(lct_fuzz::Input& in)
+    : In(in)
+  {
+    lct_fuzz::QuietOutputWindow::Install();
+    this->Errors.Observe(this->Path);
+    this->Errors.Observe(this->LogOutput);
+    this->LogOutputIsMatrixLog = in.Bool();
+    if (this->LogOutputIsMatrixLog)
+    {
+      this->LogOutput->SetParametrisationToMatrixLog();
+    }
+  }
+
+  void Run()
+  {
+    for (int op = 0; op < 64 && !this->In.Empty(); ++op)
+    {
+      this->Step();
+      this->CheckBookkeeping();
+    }
+  }
+
+private:
+  bool MatrixLog() const
+  {
+    return this->Path->GetParametrisation() == vtkTransformInterpolatorLCT::MATRIX_LOG;
+  }
+
+  bool AllTame() const
+  {
+    for (const auto& [t, key] : this->Keys)
+    {
+      if (!Tame(key.Matrix) || (key.HasIncoming && !Tame(key.Incoming)) ||
+        (key.HasOutgoing && !Tame(key.Outgoing)))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// std::map::find treats NaN as equivalent to every key (NaN breaks the ordering).
+  std::map<double, ShadowKey>::iterator Find(double t)
+  {
+    return std::isnan(t) ? this->Keys.end() : this->Keys.find(t);
+  }
+
+  int ErrorCount() const
+  {
+    return this->Errors.Errors + lct_fuzz::QuietOutputWindow::Install()->Errors;
+  }
+
+  /// A key time: an existing one (to replace it), its neighbouring double, small integers, or
+  /// anything.
+  double Time()
+  {
+    switch (this->In.Byte() % 6)
+    {
+      case 0:
+      case 1:
+        if (!this->Keys.empty())
+        {
+          auto it = this->Keys.begin();
+          std::advance(it, this->In.Int(0, static_cast<int>(this->Keys.size()) - 1));
+          if (this->In.Int(0, 3) == 0)
+          {
+            return std::nextafter(it->first, this->In.Bool() ? 1e308 : -1e308);
+          }
+          return it->first;
+        }
+        return 0.0;
+      case 2:
+      case 3:
+        return static_cast<double>(this->In.Int(-2, 12));
+      case 4:
+        return this->In.Provider().ConsumeFloatingPointInRange<double>(-1.0, 11.0);
+      default:
+        return this->In.Double();
+    }
+  }
+
+  // KNOWN: D15 (Testing/Fuzz/README.md). The automatic Bezier controls take the tangent
+  // (log(K_k^-1 K_k+1) - log(K_k^-1 K_k-1)) / (t_k+1 - t_k-1) and dereference both relative logs
+  // (vtkTransformInterpolatorLCT.cxx:87), but the key logs only guarantee the forward one,
+  // log(K_k^-1 K_k+1). When the backward one does not exist (Polar: the singularity threshold is
+  // not symmetric under inversion; MatrixLog: the a-posteriori check), InterpolateTransform with
+  // the Bezier type dereferences a null pointer (SEGV). E.g. I at t = 0 and
+  // [[0, -1, 0], [0, 0, 1.7775523980694726e-15], [-1, 0, 0]] at t = -2, Bezier, t = -2.
+  // True where the mirror of that computation finds a missing log.
+  bool BezierMeetsMissingLog() const
+  {
+    const lct::Parametrisation p =
+      this->MatrixLog() ? lct::Parametrisation::MatrixLog : lct::Parametrisation::Polar;
+    const ShadowKey* previous = nullptr;
+    for (auto it = this->Keys.begin(); it != this->Keys.end(); ++it)
+    {
+      const ShadowKey& key = it->second;
+      const bool last = std::next(it) == this->Keys.end();
+      const bool automatic = (previous && !key.HasIncoming) || (!last && !key.HasOutgoing);
+      if (automatic && previous &&
+        !lct::logarithm(lct::inverseAffine(key.Matrix) * previous->Matrix, p).ok())
+      {
+        return true;
+      }
+      previous = &key;
+    }
+    return false;
+  }
+
+  void CheckBookkeeping()
+  {
+    const int n = this->Path->GetNumberOfTransforms();
+    LCT_FUZZ_CHECK(n == static_cast<int>(this->Keys.size()),
+      "the interpolator holds " << n << " keys, the shadow " << this->Keys.size());
+    const double lo = this->Keys.empty() ? 0.0 : this->Keys.begin()->first;
+    const double hi = this->Keys.empty() ? 0.0 : this->Keys.rbegin()->first;
+    LCT_FUZZ_CHECK(this->Path->GetMinimumT() == lo && this->Path->GetMaximumT() == hi,
+      "time range [" << this->Path->GetMinimumT() << ", " << this->Path->GetMaximumT()
+                     << "], shadow [" << lo << ", " << hi << "]");
+    const int type = this->Path->GetInterpolationType();
+    LCT_FUZZ_CHECK(type >= 0 && type <= 4, "interpolation type " << type);
+  }
+
+  void Add()
+  {
+    const double t = this->Time();
+    const Eigen::Matrix4d m = this->In.Matrix();
+    const int form = this->In.Int(0, 7);
+    // KNOWN: D11 (see FuzzCorePieces.cxx): key times whose span overflows give NaN curve
+    // weights and, for Subdivision, undefined behaviour in lct::curveWeights.
+    if (std::isfinite(t) && !this->Keys.empty() &&
+      lct_fuzz::Known("D11",
+        !std::isfinite(
+          std::max(t, this->Keys.rbegin()->first) - std::min(t, this->Keys.begin()->first))))
+    {
+      return;
+    }
+    if (this->MatrixLog() && !Tame(m))
+    {
+      lct_fuzz::Known("D1+D2 (MatrixLog keys kept tame)", true);
+      return;
+    }
+    LCT_FUZZ_TRACE("AddTransform t " << t << " form " << form << "\n" << Show(m));
+    const int errors = this->ErrorCount();
+    int result = 0;
+    Eigen::Matrix4d stored = m;
+    vtkNew<vtkMatrix4x4> matrix;
+    ToVtk(m, matrix);
+    switch (form)
+    {
+      case 0:
+        result = this->Path->AddTransform(t, static_cast<vtkMatrix4x4*>(nullptr));
+        break;
+      case 1:
+      case 2:
+        result = this->Path->AddTransform(t, matrix.Get());
+        break;
+      case 3:
+      case 4:
+      {
+        vtkNew<vtkTransform> transform;
+        transform->SetMatrix(matrix);
+        stored = FromVtk(transform->GetMatrix());
+        result = this->Path->AddTransform(t, transform.Get());
+        break;
+      }
+      default:
+      {
+        vtkNew<vtkAssembly> prop;
+        prop->SetUserMatrix(matrix);
+        if (form == 7)
+        {
+          prop->SetPosition(this->In.Finite(), this->In.Finite(), this->In.Finite());
+          prop->SetOrientation(this->In.Finite(), this->In.Finite(), this->In.Finite());
+          prop->SetScale(this->In.Scale());
+        }
+        stored = FromVtk(prop->GetMatrix());
+        if (this->MatrixLog() && !Tame(stored))
+        {
+          return;
+        }
+        result = this->Path->AddTransform(t, static_cast<vtkProp3D*>(prop.Get()));
+        break;
+      }
+    }
+    const bool valid =
+      form != 0 && std::isfinite(t) && lct::validateAffine(stored) == lct::Status::Ok;
+    if (result == 1)
+    {
+      LCT_FUZZ_CHECK(valid,
+        "AddTransform accepted an invalid key (t = " << t << ")\n"
+                                                     << Show(stored));
+      LCT_FUZZ_CHECK(this->ErrorCount() == errors, "AddTransform returned 1 and reported an error");
+      ShadowKey key;
+      key.Matrix = stored;
+      this->Keys[t] = key; // a replaced key loses its Bezier controls
+    }
+    else
+    {
+      LCT_FUZZ_CHECK(result == 0 && this->ErrorCount() > errors,
+        "AddTransform returned " << result << " without an error");
+      // Polar refuses a valid key only when a step to a neighbour has no log (e.g. a product
+      // too close to singular), MatrixLog also for a missing real log; both are reported.
+    }
+  }
+
+  void Remove()
+  {
+    const double t = this->Time();
+    LCT_FUZZ_TRACE("RemoveTransform t " << t);
+    const int errors = this->ErrorCount();
+    const int before = this->Path->GetNumberOfTransforms();
+    this->Path->RemoveTransform(t);
+    const int after = this->Path->GetNumberOfTransforms();
+    const auto it = this->Find(t);
+    if (it == this->Keys.end())
+    {
+      LCT_FUZZ_CHECK(after == before && this->ErrorCount() == errors,
+        "RemoveTransform of a time without a key changed something");
+      return;
+    }
+    if (after == before - 1)
+    {
+      this->Keys.erase(it);
+      LCT_FUZZ_CHECK(this->ErrorCount() == errors, "RemoveTransform removed and reported an error");
+    }
+    else
+    {
+      LCT_FUZZ_CHECK(after == before && this->ErrorCount() > errors,
+        "RemoveTransform neither removed the key nor reported why");
+    }
+  }
+
+  void BezierControls()
+  {
+    const double t = this->Time();
+    const bool hasIncoming = this->In.Bool();
+    const bool hasOutgoing = this->In.Bool();
+    const Eigen::Matrix4d incoming = this->In.Matrix();
+    const Eigen::Matrix4d outgoing = this->In.Matrix();
+    if (this->MatrixLog() && ((hasIncoming && !Tame(incoming)) || (hasOutgoing && !Tame(outgoing))))
+    {
+      return;
+    }
+    LCT_FUZZ_TRACE("SetBezierControls t " << t << " in " << hasIncoming << " out " << hasOutgoing
+                                          << "\n"
+                                          << Show(incoming) << "\n"
+                                          << Show(outgoing));
+    vtkNew<vtkMatrix4x4> in, out;
+    ToVtk(incoming, in);
+    ToVtk(outgoing, out);
+    const int errors = this->ErrorCount();
+    const int result = this->Path->SetBezierControls(
+      t, hasIncoming ? in.Get() : nullptr, hasOutgoing ? out.Get() : nullptr);
+    const auto it = this->Find(t);
+    const bool valid = it != this->Keys.end() &&
+      (!hasIncoming || lct::validateAffine(incoming) == lct::Status::Ok) &&
+      (!hasOutgoing || lct::validateAffine(outgoing) == lct::Status::Ok);
+    LCT_FUZZ_CHECK(result == (valid ? 1 : 0),
+      "SetBezierControls returned " << result << " for a " << (valid ? "valid" : "invalid")
+                                    << " call");
+    LCT_FUZZ_CHECK((this->ErrorCount() > errors) == !valid,
+      "SetBezierControls: error reporting does not match the result");
+    if (valid)
+    {
+      it->second.HasIncoming = hasIncoming;
+      it->second.HasOutgoing = hasOutgoing;
+      it->second.Incoming = incoming;
+      it->second.Outgoing = outgoing;
+    }
+  }
+
+  void Parametrisation()
+  {
+    const int choice = this->In.Int(0, 6);
+    const int p = choice < 3
+      ? vtkTransformInterpolatorLCT::POLAR
+      : (choice < 6 ? vtkTransformInterpolatorLCT::MATRIX_LOG : this->In.Int(-2, 4));
+    if (p == vtkTransformInterpolatorLCT::MATRIX_LOG && !this->AllTame())
+    {
+      lct_fuzz::Known("D1+D2 (MatrixLog keys kept tame)", true);
+      return;
+    }
+    LCT_FUZZ_TRACE("SetParametrisation " << p);
+    const int old = this->Path->GetParametrisation();
+    const int errors = this->ErrorCount();
+    const int result = this->Path->SetParametrisation(p);
+    if (result == 1)
+    {
+      LCT_FUZZ_CHECK(this->Path->GetParametrisation() == p && this->ErrorCount() == errors,
+        "SetParametrisation returned 1 but did not take cleanly");
+    }
+    else
+    {
+      LCT_FUZZ_CHECK(this->Path->GetParametrisation() == old && this->ErrorCount() > errors,
+        "SetParametrisation failed without an error or changed the parametrisation");
+    }
+  }
+
+  void Interpolate()
+  {
+    double t;
+    switch (this->In.Byte() % 4)
+    {
+      case 0:
+        t = this->Time();
+        break;
+      case 1:
+        t = this->In.Double();
+        break;
+      default:
+        t = this->Path->GetMinimumT() +
+          this->In.Provider().ConsumeProbability<double>() *
+            (this->Path->GetMaximumT() - this->Path->GetMinimumT());
+        break;
+    }
+    const int form = this->In.Int(0, 2);
+    if (this->Path->GetInterpolationType() ==
+        vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER &&
+      lct_fuzz::Known("D15", this->BezierMeetsMissingLog()))
+    {
+      return;
+    }
+    LCT_FUZZ_TRACE("InterpolateTransform t "
+      << t << " form " << form << " type " << this->Path->GetInterpolationType() << " "
+      << (this->MatrixLog() ? "MatrixLog" : "Polar") << " consistent "
+      << this->Path->GetConsistentRotation());
+    const int errors = this->ErrorCount();
+    int result = 0;
+    Eigen::Matrix4d before, after;
+    switch (form)
+    {
+      case 0:
+      {
+        vtkNew<vtkMatrix4x4> out;
+        out->SetElement(0, 3, 12345.0); // a mark: untouched on failure
+        before = FromVtk(out);
+        result = this->Path->InterpolateTransform(t, out.Get());
+        after = FromVtk(out);
+        break;
+      }
+      case 1:
+      {
+        vtkNew<vtkTransform> out;
+        out->Translate(12345.0, 0.0, 0.0);
+        before = FromVtk(out->GetMatrix());
+        result = this->Path->InterpolateTransform(t, out.Get());
+        after = FromVtk(out->GetMatrix());
+        break;
+      }
+      default:
+      {
+        if (this->LogOutputIsMatrixLog)
+        {
+          // The output's SetMatrix takes a MatrixLog log of the result: guard it (D1/D2) by
+          // computing the same result first.
+          vtkNew<vtkMatrix4x4> probe;
+          const int errorsBefore = this->Errors.Errors;
+          if (this->Path->InterpolateTransform(t, probe.Get()) &&
+            lct_fuzz::KnownCubicLog(FromVtk(probe)))
+          {
+            return;
+          }
+          this->Errors.Errors = errorsBefore;
+        }
+        const double mark[16] = { 1, 0, 0, 12345.0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+        this->LogOutput->SetMatrix(mark);
+        before = FromVtk(this->LogOutput->GetMatrix());
+        result = this->Path->InterpolateTransform(t, this->LogOutput.Get());
+        after = FromVtk(this->LogOutput->GetMatrix());
+        break;
+      }
+    }
+    if (result == 0)
+    {
+      LCT_FUZZ_CHECK(
+        this->ErrorCount() > errors, "InterpolateTransform returned 0 without an error");
+      LCT_FUZZ_CHECK(lct_fuzz::SameBits(before.data(), after.data(), 16),
+        "InterpolateTransform failed but changed the output");
+      return;
+    }
+    LCT_FUZZ_CHECK(!this->Keys.empty() && !std::isnan(t),
+      "InterpolateTransform succeeded without keys or at NaN");
+    LCT_FUZZ_CHECK(this->ErrorCount() == errors, "InterpolateTransform returned 1 with an error");
+    if (!AllFinite(after))
+    {
+      // KNOWN: D10 (see FuzzCorePieces.cxx): the reference key is multiplied back onto a finite
+      // relative result without a check, so keys near the overflow threshold give Ok with Inf.
+      double largest = 0.0;
+      for (const auto& [time, key] : this->Keys)
+      {
+        largest = std::max(largest, key.Matrix.cwiseAbs().maxCoeff());
+      }
+      if (lct_fuzz::Known("D10", largest > 1e290))
+      {
+        return;
+      }
+    }
+    LCT_FUZZ_CHECK(AllFinite(after) && after.row(3) == Eigen::RowVector4d(0.0, 0.0, 0.0, 1.0),
+      "InterpolateTransform returned 1 with a non-finite or non-affine output at t = "
+        << t << "\n"
+        << Show(after));
+    // The interpolating types pass through their keys.
+    const int type = this->Path->GetInterpolationType();
+    const auto key = this->Find(t);
+    if (key != this->Keys.end() &&
+      type != vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE &&
+      !this->Path->GetConsistentRotation() && WellConditioned(key->second.Matrix, 1e6))
+    {
+      const Eigen::Matrix4d& k = key->second.Matrix;
+      const double error = (after - k).norm() / std::max(1.0, k.norm());
+      LCT_FUZZ_CHECK(error <= 1e-6,
+        "InterpolateTransform does not reproduce the key at t = " << t << " (error " << error
+                                                                  << ")\nkey\n"
+                                                                  << Show(k) << "\ngot\n"
+                                                                  << Show(after));
+    }
+  }
+
+  void Step()
+  {
+    switch (this->In.Byte() % 12)
+    {
+      case 0:
+      case 1:
+      case 2:
+      case 3:
+        this->Add();
+        break;
+      case 4:
+        this->Remove();
+        break;
+      case 5:
+        this->BezierControls();
+        break;
+      case 6:
+      {
+        const int type = this->In.Int(0, 7) == 0 ? this->In.Int(-3, 9) : this->In.Int(0, 4);
+        LCT_FUZZ_TRACE("SetInterpolationType " << type);
+        this->Path->SetInterpolationType(type);
+        break;
+      }
+      case 7:
+        this->Parametrisation();
+        break;
+      case 8:
+      {
+        const bool on = this->In.Bool();
+        LCT_FUZZ_TRACE("ConsistentRotation " << on);
+        this->Path->SetConsistentRotation(on);
+        break;
+      }
+      case 9:
+        if (this->In.Int(0, 7) == 0)
+        {
+          LCT_FUZZ_TRACE("Initialize");
+          this->Path->Initialize();
+          this->Keys.clear();
+          break;
+        }
+        this->Interpolate();
+        break;
+      default:
+        this->Interpolate();
+        break;
+    }
+  }
+
+  lct_fuzz::Input& In;
+  vtkNew<vtkTransformInterpolatorLCT> Path;
+  vtkNew<vtkLogTransform> LogOutput;
+  bool LogOutputIsMatrixLog = false;
+  std::map<double, ShadowKey> Keys;
+  lct_fuzz::ErrorObserver Errors;
+};
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+  lct_fuzz::Input in(data, size);
+  Session session(in);
+  session.Run();
+  return 0;
+}
