@@ -229,6 +229,14 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
     vtkErrorMacro(<< "AddCamera: the key time " << t << " is not finite; key rejected.");
     return 0;
   }
+  const lct::Keyframes<Key>& keys = this->Internal->Keys;
+  if (!keys.empty() &&
+    (!std::isfinite(std::max(t, keys.maximumTime()) - std::min(t, keys.minimumTime()))))
+  {
+    vtkErrorMacro(<< "AddCamera: the key time " << lct::formatNumber(t)
+                  << " would make the key times span more than the double range; key rejected.");
+    return 0;
+  }
   const char* why = "";
   const auto key = lct::toCameraKey(fromVtk(camera), &why);
   if (!key)

@@ -4,6 +4,7 @@
 #include "lct/Combination.h"
 #include "lct/Format.h"
 #include "lct/Parametrisation.h"
+#include "lct/PolarParametrisation.h"
 
 #include "vtkCollection.h"
 #include "vtkDoubleArray.h"
@@ -372,11 +373,9 @@ void vtkLogTransform::Inverse()
     this->Commit(negated.data(), this->Parametrisation, "Inverse");
     return;
   }
-  // Polar: psi(M^-1) != -psi(M) unless the factors commute; recompute, keeping the winding of
-  // the rotation (the inverse's rotation is U^T, whose nearest log is near -w).
-  lct::LogCoords reference = -s.Coordinates;
-  const auto c =
-    lct::logarithm(lct::inverseAffine(s.Matrix), lct::Parametrisation::Polar, &reference);
+  // Polar: psi(M^-1) != -psi(M) unless the factors commute, but it has a closed form that keeps
+  // the winding of the rotation exactly: (-A^-1 l, -w, -U Y U^T).
+  const auto c = lct::polarInverse(s.Coordinates);
   if (!c)
   {
     vtkErrorMacro(<< "Inverse: " << lct::describe(c.status) << "; unchanged.");

@@ -364,6 +364,14 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
     vtkErrorMacro(<< caller << ": the key time " << t << " is not finite; key rejected.");
     return 0;
   }
+  const lct::Keyframes<Key>& keys = this->Internal->Keys;
+  if (!keys.empty() &&
+    (!std::isfinite(std::max(t, keys.maximumTime()) - std::min(t, keys.minimumTime()))))
+  {
+    vtkErrorMacro(<< caller << ": the key time " << lct::formatNumber(t)
+                  << " would make the key times span more than the double range; key rejected.");
+    return 0;
+  }
   Key key;
   key.Time = t;
   key.Matrix = RowMajor4(Eigen::Map<const RowMajor4>(elements));

@@ -33,6 +33,8 @@ int segmentOf(const double* times, int n, double t, double& u)
   const int i = static_cast<int>(std::upper_bound(times, times + n, t) - times) - 1;
   const int segment = std::clamp(i, 0, n - 2);
   u = (t - times[segment]) / (times[segment + 1] - times[segment]);
+  // Callers keep the span of the times finite; should it not be, u must still not be NaN.
+  u = std::isfinite(u) ? std::clamp(u, 0.0, 1.0) : 0.0;
   return segment;
 }
 
@@ -118,7 +120,8 @@ double fundamental(double x)
   const std::vector<double>& v = fundamentalFunction();
   const std::vector<double>& d = fundamentalSlopes();
   const double position = (x + 3.0) * kPerUnit;
-  if (position <= 0.0 || position >= static_cast<double>(v.size() - 1))
+  // Written so that NaN is outside too: it must never reach the cast below.
+  if (!(position > 0.0 && position < static_cast<double>(v.size() - 1)))
   {
     return 0.0;
   }

@@ -4,7 +4,8 @@
  *        combination of keys, which the parametrisations turn into one exp (Alexa §6.1,
  *        Hawkins & Grimm §3.3).
  *
- * Key times must be strictly increasing; t is clamped to [first, last].
+ * Key times must be strictly increasing with a finite span (last - first representable: the
+ * interpolators refuse keys that would break it); t is clamped to [first, last].
  * - Linear: (1 - u, u) on the segment holding t.
  * - CatmullRom: the interpolating C1 cubic Hermite spline with tangents
  *   (p[i+1] - p[i-1]) / (t[i+1] - t[i-1]) on non-uniform times (one-sided at the ends), the

@@ -98,10 +98,33 @@ Scalar seriesDividedDifference(
     w[v] -= centre;
   }
 
-  // a_k by recurrence in k, from a_0 = f(c).
-  const Scalar inverseCentre = Scalar(1.0) / centre;
-  Scalar a = evaluate(f, centre);
-  Scalar inversePower(1.0); // (1/c)^k, for log
+  // Log and sqrt: with u = w / c, a_k h_j(w) = b_k c^(-order) h_j(u) (log: a_k = (-1)^(k+1) c^-k /
+  // k) or b_k c^(1/2 - order) h_j(u) (sqrt: a_k = binom(1/2, k) c^(1/2 - k)), since h_j is
+  // homogeneous of degree j = k - order. The powers of 1/c are never formed, so a cluster of
+  // nodes far from 1 (a stretch of 1e-60) does not overflow them.
+  const bool scaled = f != ScalarFunction::Exp;
+  Scalar scale(1.0);
+  if (scaled)
+  {
+    const Scalar inverseCentre = Scalar(1.0) / centre;
+    for (int v = 0; v < m; ++v)
+    {
+      w[v] = multiply(w[v], inverseCentre);
+    }
+    for (int k = 0; k < order; ++k)
+    {
+      scale = multiply(scale, inverseCentre);
+    }
+    if (f == ScalarFunction::Sqrt)
+    {
+      scale = multiply(scale, std::sqrt(centre));
+    }
+  }
+  // b_k by recurrence in k: exp e^c / k!, log (-1)^(k+1) / k (b_0 = log c, with scale 1), sqrt
+  // binom(1/2, k).
+  Scalar a = f == ScalarFunction::Exp
+    ? evaluate(f, centre)
+    : (f == ScalarFunction::Log ? evaluate(f, centre) : Scalar(1.0));
   auto advance = [&](int k) {
     switch (f)
     {
@@ -109,17 +132,25 @@ Scalar seriesDividedDifference(
         a /= static_cast<double>(k);
         break;
       case ScalarFunction::Log:
-        inversePower = multiply(inversePower, inverseCentre);
-        a = ((k % 2) ? 1.0 : -1.0) / static_cast<double>(k) * inversePower;
+        a = Scalar(((k % 2) ? 1.0 : -1.0) / static_cast<double>(k));
         break;
       case ScalarFunction::Sqrt:
-        a = multiply(a, (1.5 - k) / static_cast<double>(k) * inverseCentre);
+        a *= (1.5 - k) / static_cast<double>(k);
         break;
     }
   };
   for (int k = 1; k <= order; ++k)
   {
     advance(k);
+  }
+  // The largest |u| (or |w|): |h_j| <= C(j + m - 1, m - 1) r^j bounds every later term, so the
+  // sum stops on a bound, not on a term that happens to vanish (h_1 = 0 about the centroid, and
+  // h_2 = 0 for nodes symmetric about it: an equilateral triangle stopped the series before its
+  // leading term).
+  double r = 0.0;
+  for (int v = 0; v < m; ++v)
+  {
+    r = std::max(r, magnitude(w[v]));
   }
 
   // hv[v] = h_j(w_0 .. w_v) for the current degree j.
@@ -129,6 +160,7 @@ Scalar seriesDividedDifference(
     hv[v] = Scalar(1.0);
   }
   Scalar sum = a; // j = 0: h_0 = 1
+  double rPower = 1.0;
   int negligible = 0;
   for (int j = 1; j <= kMaxDegree; ++j)
   {
@@ -139,10 +171,16 @@ Scalar seriesDividedDifference(
       previous = hv[v];
     }
     advance(order + j);
-    const Scalar term = multiply(a, hv[m - 1]);
-    sum += term;
-    // Stop after two consecutive terms below round-off of the sum.
-    if (magnitude(term) <= 0.25 * std::numeric_limits<double>::epsilon() * magnitude(sum))
+    sum += multiply(a, hv[m - 1]);
+    rPower *= r;
+    double count = 1.0; // C(j + m - 1, m - 1)
+    for (int i = 1; i < m; ++i)
+    {
+      count = count * (j + i) / i;
+    }
+    const double bound = magnitude(a) * count * rPower;
+    // Stop after two consecutive bounds below round-off of the sum.
+    if (bound <= 0.25 * std::numeric_limits<double>::epsilon() * magnitude(sum))
     {
       if (++negligible == 2)
       {
@@ -154,7 +192,7 @@ Scalar seriesDividedDifference(
       negligible = 0;
     }
   }
-  return sum;
+  return scaled ? multiply(sum, scale) : sum;
 }
 
 template <typename Scalar>

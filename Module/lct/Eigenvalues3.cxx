@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lct
 {
@@ -17,12 +18,14 @@ constexpr double kTwoPiOver3 = 2.0943951023931954923;
 
 namespace
 {
-/// Entries beyond 2^±400 would overflow or underflow the cubic's coefficients (cubes of them):
-/// such matrices are scaled by a power of two, which scales the eigenvalues exactly.
+/// Entries beyond 2^+-300 would overflow the trace or leave the normal range in the shifted
+/// matrix: such matrices are scaled by a power of two, which scales the eigenvalues exactly. (The
+/// traceless part is scaled on its own below, since its cubes under- or overflow at any
+/// magnitude of A: 2 I + 1e-110 E had a 0/0.)
 bool needsScaling(const Eigen::Matrix3d& a, int& exponent)
 {
   const double largest = a.cwiseAbs().maxCoeff();
-  if (!(largest > 0x1p-400 && largest < 0x1p400) && largest > 0.0 && std::isfinite(largest))
+  if (!(largest > 0x1p-300 && largest < 0x1p300) && largest > 0.0 && std::isfinite(largest))
   {
     exponent = unitScaleExponent(a);
     return true;
@@ -39,12 +42,26 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
     return scaledByPowerOfTwo(symmetricEigenvalues(scaledByPowerOfTwo(a, -exponent)), exponent);
   }
   const double shift = a.trace() / 3.0;
-  const double b00 = a(0, 0) - shift;
-  const double b11 = a(1, 1) - shift;
-  const double b22 = a(2, 2) - shift;
-  const double b01 = a(0, 1);
-  const double b02 = a(0, 2);
-  const double b12 = a(1, 2);
+  // B = A - shift I at unit size (exact power of two), so that its cubes stay normal.
+  const double raw[6] = { a(0, 0) - shift, a(1, 1) - shift, a(2, 2) - shift, a(0, 1), a(0, 2),
+    a(1, 2) };
+  double largestB = 0.0;
+  for (double x : raw)
+  {
+    largestB = std::max(largestB, std::abs(x));
+  }
+  if (!(largestB > 0.0))
+  {
+    return Eigen::Vector3d::Constant(shift);
+  }
+  int e = 0;
+  std::frexp(largestB, &e);
+  const double b00 = std::ldexp(raw[0], -e);
+  const double b11 = std::ldexp(raw[1], -e);
+  const double b22 = std::ldexp(raw[2], -e);
+  const double b01 = std::ldexp(raw[3], -e);
+  const double b02 = std::ldexp(raw[4], -e);
+  const double b12 = std::ldexp(raw[5], -e);
   // tr(B^2)/6, a sum of squares: no cancellation.
   const double offDiagonal = b01 * b01 + b02 * b02 + b12 * b12;
   const double p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offDiagonal) / 6.0;
@@ -53,6 +70,7 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
     return Eigen::Vector3d::Constant(shift);
   }
   const double p = std::sqrt(p2);
+  const double scaledP = std::ldexp(p, e); // p of the unscaled B
   // det(B / p) / 2 lies in [-1, 1]; clamp against round-off.
   const double detB =
     b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
@@ -61,9 +79,9 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
   // cos(phi -+ 2 pi/3) = -cos(phi)/2 +- sqrt(3)/2 sin(phi): one cos and one sin for all three.
   const double c = std::cos(phi);
   const double s = 0.8660254037844386468 * std::sin(phi);
-  const double largest = shift + 2.0 * p * c;
-  const double smallest = shift + p * (-c - 2.0 * s);
-  const double middle = shift + p * (-c + 2.0 * s);
+  const double largest = shift + 2.0 * scaledP * c;
+  const double smallest = shift + scaledP * (-c - 2.0 * s);
+  const double middle = shift + scaledP * (-c + 2.0 * s);
   // phi in [0, pi/3] orders them; the clamp keeps round-off from swapping neighbours.
   return Eigen::Vector3d(largest, std::clamp(middle, smallest, largest), smallest);
 }
@@ -84,6 +102,10 @@ GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
   const double shift = a.trace() / 3.0;
   Eigen::Matrix3d b = a;
   b.diagonal().array() -= shift;
+  // The roots of B's characteristic polynomial at unit size, then scaled back: p (squares) and
+  // q (cubes) of a tiny or huge B would leave the normal range.
+  const int e = unitScaleExponent(b);
+  b = scaledByPowerOfTwo(b, -e);
   // Characteristic polynomial of B: y^3 + p y + q with p = sum of principal 2x2 minors,
   // q = -det B.
   const double p = b(0, 0) * b(1, 1) - b(0, 1) * b(1, 0) + b(0, 0) * b(2, 2) - b(0, 2) * b(2, 0) +
@@ -94,6 +116,15 @@ GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
   const double discriminant = halfQ * halfQ + thirdP * thirdP * thirdP;
 
   GeneralEigenvalues out;
+  if (!std::isfinite(discriminant))
+  {
+    // Only NaN input gets here (B is at unit size): say so, rather than guess a triple root.
+    for (auto& value : out.values)
+    {
+      value = std::numeric_limits<double>::quiet_NaN();
+    }
+    return out;
+  }
   if (discriminant > 0.0)
   {
     // One real root and a conjugate pair (Cardano). u^3 is formed without cancellation and
@@ -101,8 +132,8 @@ GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
     const double sqrtD = std::sqrt(discriminant);
     const double u = std::cbrt(-halfQ - std::copysign(sqrtD, halfQ));
     const double v = (u != 0.0) ? -thirdP / u : 0.0;
-    const double real = u + v;
-    const double imag = 0.8660254037844386468 * std::abs(u - v); // sqrt(3)/2
+    const double real = std::ldexp(u + v, e);
+    const double imag = std::ldexp(0.8660254037844386468 * std::abs(u - v), e); // sqrt(3)/2
     out.complexPair = true;
     out.values[0] = std::complex<double>(shift - 0.5 * real, imag);
     out.values[1] = std::conj(out.values[0]);
@@ -121,9 +152,10 @@ GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
   const double m = 2.0 * std::sqrt(-thirdP);
   const double r = std::clamp(3.0 * q / (p * m), -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
-  out.values[0] = shift + m * std::cos(phi);
-  out.values[1] = shift + m * std::cos(phi - kTwoPiOver3);
-  out.values[2] = shift + m * std::cos(phi + kTwoPiOver3);
+  const double scaledM = std::ldexp(m, e);
+  out.values[0] = shift + scaledM * std::cos(phi);
+  out.values[1] = shift + scaledM * std::cos(phi - kTwoPiOver3);
+  out.values[2] = shift + scaledM * std::cos(phi + kTwoPiOver3);
   return out;
 }
 

@@ -281,7 +281,9 @@ Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s)
   Eigen::Matrix4d e = m;
   e.diagonal().array() -= 1.0;
   const double norm = e.norm();
-  if (norm >= 0.25)
+  // The series only where its terms fall geometrically from the start (|s| <= 2, ||E|| < 1/4:
+  // ratio (|s| + k) / k ||E|| <= 1/2); a huge |s| would overflow binom(s, k) first.
+  if (norm >= 0.25 || std::abs(s) > 2.0)
   {
     const auto l = matrixLog(m);
     if (!l)
@@ -290,7 +292,7 @@ Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s)
     }
     return matrixExp(s * l.value);
   }
-  // (I + E)^s = sum_k binom(s, k) E^k; |binom(s, k)| <= max(1, |s|)^k-ish and ||E^k|| <= 1/4^k.
+  // (I + E)^s = sum_k binom(s, k) E^k with |binom(s, k)| <= (k + 1)^2 / 2 here and ||E^k|| <= 4^-k.
   // E has a zero bottom row, so only the top 3x4 block of the powers is formed.
   Eigen::Matrix<double, 3, 4> power = e.topRows<3>();
   Eigen::Matrix<double, 3, 4> sum = s * power;

@@ -40,9 +40,9 @@ VTKLCT_EXPORT Result<LogCoords> matrixLog(const Eigen::Matrix4d& m);
 VTKLCT_EXPORT Result<Eigen::Matrix4d> matrixExp(const LogCoords& c);
 
 /// The principal power M^s = exp(s log M) (Alexa's s (.) M). Near the identity
-/// (||M - I||_F < 1/4) it sums the binomial series (I + E)^s = sum_k binom(s, k) E^k, which
-/// converges geometrically and needs no eigenvalues; elsewhere it is matrixExp(s matrixLog(M)).
-/// Fails like matrixLog.
+/// (||M - I||_F < 1/4) and for |s| <= 2 it sums the binomial series (I + E)^s = sum_k binom(s, k)
+/// E^k, which converges geometrically and needs no eigenvalues; elsewhere it is matrixExp(s
+/// matrixLog(M)). Fails like matrixLog.
 VTKLCT_EXPORT Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s);
 
 /// The 3x3 log matrix (skew + symmetric part) held by c.

@@ -28,6 +28,18 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   {
     return R::failure(valid);
   }
+  if (rotationReference)
+  {
+    if (!rotationReference->allFinite())
+    {
+      return R::failure(Status::NonFinite);
+    }
+    // Wound further, the angle would keep fewer than 7 digits below a turn.
+    if (rotationReference->norm() > kMaxRotationWinding)
+    {
+      return R::failure(Status::OutOfRange);
+    }
+  }
   const auto polar = polarDecompose(m.topLeftCorner<3, 3>());
   if (!polar)
   {
@@ -66,6 +78,28 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   {
     return R::failure(Status::OutOfRange);
   }
+  return out;
+}
+
+Result<LogCoords> polarInverse(const LogCoords& c)
+{
+  using R = Result<LogCoords>;
+  const auto m = polarExp(c);
+  if (!m)
+  {
+    return R::failure(m.status);
+  }
+  const Eigen::Matrix4d inverse = inverseAffine(m.value);
+  if (!inverse.allFinite())
+  {
+    return R::failure(Status::OutOfRange);
+  }
+  const Eigen::Matrix3d u = expSO3(rotationPart(c));
+  R out;
+  translationPart(out.value) = inverse.topRightCorner<3, 1>();
+  rotationPart(out.value) = -rotationPart(c);
+  const Eigen::Matrix3d y = u * fromSymmetricVector(symmetricPart(c)) * u.transpose();
+  symmetricPart(out.value) = -toSymmetricVector(0.5 * (y + y.transpose()));
   return out;
 }
 

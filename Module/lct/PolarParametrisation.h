@@ -23,10 +23,20 @@
 namespace lct
 {
 
-/// psi(M). Fails with NonFinite, NotAffine, NegativeDeterminant, Singular, IllConditioned
-/// (lct/Conditioning.h) or OutOfRange (a subnormal stretch).
+/// The largest |rotation reference| accepted (radians): beyond it a wound angle keeps fewer
+/// than 7 digits below a turn (ulp(1e9) ~ 1e-7).
+constexpr double kMaxRotationWinding = 1e9;
+
+/// psi(M). Fails with NonFinite (M or the reference), NotAffine, NegativeDeterminant, Singular,
+/// IllConditioned (lct/Conditioning.h) or OutOfRange (a subnormal stretch, or a reference wound
+/// beyond kMaxRotationWinding).
 VTKLCT_EXPORT Result<LogCoords> polarLog(
   const Eigen::Matrix4d& m, const Eigen::Vector3d* rotationReference = nullptr);
+
+/// psi(M^-1) from psi(M) = (l, w, Y) without a logarithm, keeping the winding of w exactly:
+/// M^-1 = T(-A^-1 l) U^T (U exp(-Y) U^T), so psi(M^-1) = (-A^-1 l, -w, -U Y U^T) with U = exp(w).
+/// Fails with OutOfRange when the inverse is not representable.
+VTKLCT_EXPORT Result<LogCoords> polarInverse(const LogCoords& c);
 
 /// phi(c). Fails with NonFinite (c not finite), OutOfRange (the result overflows, or a stretch
 /// underflows below the normal range) or IllConditioned (stretch condition number above
