@@ -5,6 +5,7 @@
 #include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
+#include "lct/RebuildOnce.h"
 
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
@@ -111,34 +112,22 @@ struct vtkCameraInterpolatorLCT::Internals
 
   const lct::KeyLogs& OrientationLogs()
   {
-    if (!this->OrientationsCurrent.load(std::memory_order_acquire))
-    {
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      if (!this->OrientationsCurrent.load(std::memory_order_relaxed))
-      {
-        this->Keys.flatten();
-        this->Orientations.build(
-          Matrices(this->Keys, &Orientation), lct::Parametrisation::Polar, false);
-        this->OrientationsCurrent.store(true, std::memory_order_release);
-      }
-    }
+    lct::rebuildOnce(this->OrientationsCurrent, this->Mutex, [this] {
+      this->Keys.flatten();
+      this->Orientations.build(
+        Matrices(this->Keys, &Orientation), lct::Parametrisation::Polar, false);
+    });
     return this->Orientations;
   }
 
   const lct::KeyLogs& CameraMatrixLogs()
   {
     this->OrientationLogs(); // flattens the keys
-    if (!this->CameraMatricesCurrent.load(std::memory_order_acquire))
-    {
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      if (!this->CameraMatricesCurrent.load(std::memory_order_relaxed))
-      {
-        this->CameraMatricesStatus = this->CameraMatrices.build(
-          Matrices(this->Keys, [](const Key& k) -> Eigen::Matrix4d { return k.CameraMatrix; }),
-          lct::Parametrisation::MatrixLog, true);
-        this->CameraMatricesCurrent.store(true, std::memory_order_release);
-      }
-    }
+    lct::rebuildOnce(this->CameraMatricesCurrent, this->Mutex, [this] {
+      this->CameraMatricesStatus = this->CameraMatrices.build(
+        Matrices(this->Keys, [](const Key& k) -> Eigen::Matrix4d { return k.CameraMatrix; }),
+        lct::Parametrisation::MatrixLog, true);
+    });
     return this->CameraMatrices;
   }
 
@@ -229,9 +218,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
     vtkErrorMacro(<< "AddCamera: the key time " << t << " is not finite; key rejected.");
     return 0;
   }
-  const lct::Keyframes<Key>& keys = this->Internal->Keys;
-  if (!keys.empty() &&
-    (!std::isfinite(std::max(t, keys.maximumTime()) - std::min(t, keys.minimumTime()))))
+  if (!this->Internal->Keys.keepsFiniteSpan(t))
   {
     vtkErrorMacro(<< "AddCamera: the key time " << lct::formatNumber(t)
                   << " would make the key times span more than the double range; key rejected.");

@@ -25,15 +25,6 @@ lct::Parametrisation toCore(int parametrisation)
                                                         : lct::Parametrisation::Polar;
 }
 
-/// Advice for a failure that the other parametrisation would not have.
-const char* advice(lct::Status status, int parametrisation)
-{
-  return status == lct::Status::NoRealLogarithm && parametrisation == vtkLogTransform::MATRIX_LOG
-    ? " (the Polar parametrisation, SetParametrisationToPolar(), has coordinates for every "
-      "orientation-preserving map)"
-    : "";
-}
-
 Eigen::Matrix4d toEigen(const double elements[16])
 {
   // vtkMatrix4x4 stores row-major elements.
@@ -167,7 +158,7 @@ int vtkLogTransform::SetMatrixNear(const double elements[16], const double* refe
   if (!c)
   {
     vtkErrorMacro(<< "SetMatrix: " << lct::describe(c.status)
-                  << advice(c.status, this->Parametrisation) << "; unchanged.");
+                  << lct::adviceFor(c.status, toCore(this->Parametrisation)) << "; unchanged.");
     return 0;
   }
   return this->Commit(c.value.data(), this->Parametrisation, "SetMatrix") ? 1 : 0;
@@ -290,7 +281,7 @@ int vtkLogTransform::LinearCombination(
       vtkErrorWithObjectMacro(
         result, << "LinearCombination: transform " << i << " has no "
                 << lct::name(toCore(parametrisation)) << " coordinates: " << lct::describe(c.status)
-                << advice(c.status, parametrisation) << "; result unchanged.");
+                << lct::adviceFor(c.status, toCore(parametrisation)) << "; result unchanged.");
       return 0;
     }
     sum += weights[i] * c.value;

@@ -7,6 +7,7 @@
 #include "lct/Keyframes.h"
 #include "lct/Parametrisation.h"
 #include "lct/PolarParametrisation.h"
+#include "lct/RebuildOnce.h"
 
 #include "vtkLogTransform.h"
 #include "vtkMatrix4x4.h"
@@ -95,24 +96,18 @@ struct vtkTransformInterpolatorLCT::Internals
   /// The key logs, rebuilt if stale. Null, with LogsStatus saying why, when they cannot be.
   const lct::KeyLogs* Logs()
   {
-    if (!this->LogsCurrent.load(std::memory_order_acquire))
-    {
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      if (!this->LogsCurrent.load(std::memory_order_relaxed))
+    lct::rebuildOnce(this->LogsCurrent, this->Mutex, [this] {
+      this->Keys.flatten();
+      std::vector<Eigen::Matrix4d> matrices;
+      matrices.reserve(this->Keys.size());
+      for (size_t i = 0; i < this->Keys.size(); ++i)
       {
-        this->Keys.flatten();
-        std::vector<Eigen::Matrix4d> matrices;
-        matrices.reserve(this->Keys.size());
-        for (size_t i = 0; i < this->Keys.size(); ++i)
-        {
-          matrices.push_back(this->Keys[i].Matrix);
-        }
-        int failed = 0;
-        this->LogsStatus = this->KeyLogs.build(matrices, this->P, true, &failed);
-        this->LogsFailedTime = this->LogsStatus == lct::Status::Ok ? 0.0 : this->Keys[failed].Time;
-        this->LogsCurrent.store(true, std::memory_order_release);
+        matrices.push_back(this->Keys[i].Matrix);
       }
-    }
+      int failed = 0;
+      this->LogsStatus = this->KeyLogs.build(matrices, this->P, true, &failed);
+      this->LogsFailedTime = this->LogsStatus == lct::Status::Ok ? 0.0 : this->Keys[failed].Time;
+    });
     return this->LogsStatus == lct::Status::Ok ? &this->KeyLogs : nullptr;
   }
 
@@ -190,25 +185,18 @@ struct vtkTransformInterpolatorLCT::Internals
       this->BezierFailedTime = this->LogsFailedTime;
       return nullptr;
     }
-    if (!this->BezierCurrent.load(std::memory_order_acquire))
-    {
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      if (!this->BezierCurrent.load(std::memory_order_relaxed))
+    lct::rebuildOnce(this->BezierCurrent, this->Mutex, [this, logs] {
+      std::vector<Eigen::Matrix4d> sequence;
+      int failed = 0;
+      this->BezierStatus = this->BezierSequence(*logs, sequence, failed);
+      if (this->BezierStatus == lct::Status::Ok)
       {
-        std::vector<Eigen::Matrix4d> sequence;
-        int failed = 0;
-        this->BezierStatus = this->BezierSequence(*logs, sequence, failed);
-        if (this->BezierStatus == lct::Status::Ok)
-        {
-          this->BezierStatus = this->BezierLogs.build(sequence, this->P, false, &failed);
-          failed = (failed + 1) / 3;
-        }
-        this->BezierFailedTime = this->Keys.empty()
-          ? 0.0
-          : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
-        this->BezierCurrent.store(true, std::memory_order_release);
+        this->BezierStatus = this->BezierLogs.build(sequence, this->P, false, &failed);
+        failed = (failed + 1) / 3;
       }
-    }
+      this->BezierFailedTime =
+        this->Keys.empty() ? 0.0 : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
+    });
     return this->BezierStatus == lct::Status::Ok ? &this->BezierLogs : nullptr;
   }
 
@@ -303,18 +291,6 @@ struct vtkTransformInterpolatorLCT::Internals
   }
 };
 
-namespace
-{
-/// Advice for a failure that another parametrisation would not have.
-const char* advice(lct::Status status, lct::Parametrisation p)
-{
-  return status == lct::Status::NoRealLogarithm && p == lct::Parametrisation::MatrixLog
-    ? " (the Polar parametrisation, SetParametrisationToPolar(), has a logarithm for every "
-      "orientation-preserving map)"
-    : "";
-}
-} // namespace
-
 //------------------------------------------------------------------------------
 vtkTransformInterpolatorLCT::vtkTransformInterpolatorLCT()
   : Internal(new Internals)
@@ -364,9 +340,7 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
     vtkErrorMacro(<< caller << ": the key time " << t << " is not finite; key rejected.");
     return 0;
   }
-  const lct::Keyframes<Key>& keys = this->Internal->Keys;
-  if (!keys.empty() &&
-    (!std::isfinite(std::max(t, keys.maximumTime()) - std::min(t, keys.minimumTime()))))
+  if (!this->Internal->Keys.keepsFiniteSpan(t))
   {
     vtkErrorMacro(<< caller << ": the key time " << lct::formatNumber(t)
                   << " would make the key times span more than the double range; key rejected.");
@@ -394,7 +368,7 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
     vtkErrorMacro(<< caller << " at t = " << lct::formatNumber(t)
                   << ": the step between this key and the key at t = "
                   << lct::formatNumber(neighbourTime) << " has no " << lct::name(p)
-                  << " logarithm: " << lct::describe(added) << advice(added, p)
+                  << " logarithm: " << lct::describe(added) << lct::adviceFor(added, p)
                   << "; key rejected.");
     return 0;
   }
@@ -488,7 +462,7 @@ void vtkTransformInterpolatorLCT::RemoveTransform(double t)
     const lct::Parametrisation p = this->Internal->P;
     vtkErrorMacro(<< "RemoveTransform(" << lct::formatNumber(t)
                   << "): its two neighbours would be joined by a step without a " << lct::name(p)
-                  << " logarithm: " << lct::describe(removed) << advice(removed, p)
+                  << " logarithm: " << lct::describe(removed) << lct::adviceFor(removed, p)
                   << "; not removed.");
     return;
   }
@@ -559,7 +533,7 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << lct::formatNumber(bezier ? in.BezierFailedTime : in.LogsFailedTime)
                   << (bezier ? " have no " : " has no ") << lct::name(in.P)
                   << " logarithm: " << lct::describe(bezier ? in.BezierStatus : in.LogsStatus)
-                  << advice(bezier ? in.BezierStatus : in.LogsStatus, in.P)
+                  << lct::adviceFor(bezier ? in.BezierStatus : in.LogsStatus, in.P)
                   << "; output unchanged.");
     return false;
   }
@@ -572,7 +546,7 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
     vtkErrorMacro(<< "InterpolateTransform(" << lct::formatNumber(t) << "): "
                   << (this->ConsistentRotation ? "the absolute logarithms (ConsistentRotation) "
                                                : "the combination of the keys ")
-                  << "failed: " << lct::describe(status) << advice(status, in.P)
+                  << "failed: " << lct::describe(status) << lct::adviceFor(status, in.P)
                   << "; output unchanged.");
     return false;
   }

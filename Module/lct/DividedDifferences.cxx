@@ -31,21 +31,6 @@ inline double magnitude(const Complex& z)
   return std::sqrt(z.real() * z.real() + z.imag() * z.imag());
 }
 
-template <typename Scalar>
-Scalar evaluate(ScalarFunction f, const Scalar& z)
-{
-  switch (f)
-  {
-    case ScalarFunction::Exp:
-      return std::exp(z);
-    case ScalarFunction::Log:
-      return std::log(z);
-    case ScalarFunction::Sqrt:
-      return std::sqrt(z);
-  }
-  return z;
-}
-
 /// Whether the nodes of a subset, of diameter `diameter` about `centre`, are close enough for
 /// the Taylor series: within radius 1 for exp (terms fall like 1/k!), within a quarter of
 /// |centre| for log and sqrt (terms fall like 4^-k). Log and sqrt also need the centre in the

@@ -21,6 +21,7 @@
 
 #include "vtkLCTModule.h"
 
+#include <cmath>
 #include <complex>
 
 namespace lct
@@ -33,6 +34,22 @@ enum class ScalarFunction
   Log, ///< principal branch; nodes must not lie on the closed negative real axis
   Sqrt ///< principal branch; same domain as Log
 };
+
+/// f(z) on its principal branch.
+template <typename Scalar>
+Scalar evaluate(ScalarFunction f, const Scalar& z)
+{
+  switch (f)
+  {
+    case ScalarFunction::Exp:
+      return std::exp(z);
+    case ScalarFunction::Log:
+      return std::log(z);
+    case ScalarFunction::Sqrt:
+      return std::sqrt(z);
+  }
+  return z;
+}
 
 /// All divided differences of f over the subsets of `count` (<= 4) nodes.
 /// `table[mask]` is f[ nodes whose bit is set in mask ], for mask in 1 .. 2^count - 1.

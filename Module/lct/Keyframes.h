@@ -13,6 +13,7 @@
 #define lct_Keyframes_h
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <map>
@@ -51,6 +52,13 @@ public:
   {
     const auto it = this->Keys.upper_bound(t);
     return it == this->Keys.end() ? nullptr : &it->second;
+  }
+  /// Whether a key at t keeps the span of the key times finite (the curve weights divide by
+  /// time differences).
+  bool keepsFiniteSpan(double t) const
+  {
+    return this->empty() ||
+      std::isfinite(std::max(t, this->maximumTime()) - std::min(t, this->minimumTime()));
   }
   /// Whether t is later than every key (an append keeps a flat view cheap to extend).
   bool isAppend(double t) const { return this->empty() || t > this->maximumTime(); }

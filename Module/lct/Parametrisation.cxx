@@ -25,6 +25,16 @@ Result<Eigen::Matrix4d> exponential(const LogCoords& c, Parametrisation p)
   return p == Parametrisation::MatrixLog ? matrixExp(c) : polarExp(c);
 }
 
+const char* adviceFor(Status status, Parametrisation p) noexcept
+{
+  const bool polarWouldWork =
+    status == Status::NoRealLogarithm || status == Status::MagnitudeOutOfRange;
+  return p == Parametrisation::MatrixLog && polarWouldWork
+    ? " (the Polar parametrisation, SetParametrisationToPolar(), has a logarithm for every "
+      "orientation-preserving map of any magnitude)"
+    : "";
+}
+
 const char* name(Parametrisation p) noexcept
 {
   return p == Parametrisation::MatrixLog ? "MatrixLog" : "Polar";

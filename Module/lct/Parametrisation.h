@@ -25,6 +25,11 @@ VTKLCT_EXPORT Result<LogCoords> logarithm(
 /// (see polarExp / matrixExp).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> exponential(const LogCoords& c, Parametrisation p);
 
+/// For a failure in p that the other parametrisation would not have (MatrixLog: no real
+/// logarithm, or magnitudes beyond its range), a parenthesised hint to switch to Polar; else "".
+/// Messages never advise what is already in use.
+VTKLCT_EXPORT const char* adviceFor(Status status, Parametrisation p) noexcept;
+
 /// "Polar" or "MatrixLog".
 VTKLCT_EXPORT const char* name(Parametrisation p) noexcept;
 

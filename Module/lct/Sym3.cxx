@@ -71,25 +71,11 @@ SymmetricEigen eigenDecompose(const Eigen::Matrix3d& y)
   return { solver.eigenvalues().reverse(), solver.eigenvectors().rowwise().reverse() };
 }
 
-double applyScalar(ScalarFunction f, double x)
-{
-  switch (f)
-  {
-    case ScalarFunction::Exp:
-      return std::exp(x);
-    case ScalarFunction::Log:
-      return std::log(x);
-    case ScalarFunction::Sqrt:
-      return std::sqrt(x);
-  }
-  return x;
-}
-
 /// f(Y) = V diag(f(l)) V^T: for spread spectra, where the Newton form about the middle
 /// eigenvalue cancels (it builds the small eigenvalues' part from terms the size of the largest).
 Eigen::Matrix3d applyEigen(ScalarFunction f, const SymmetricEigen& e)
 {
-  const Eigen::Vector3d fl = e.values.unaryExpr([f](double x) { return applyScalar(f, x); });
+  const Eigen::Vector3d fl = e.values.unaryExpr([f](double x) { return evaluate(f, x); });
   const Eigen::Matrix3d result = e.vectors * fl.asDiagonal() * e.vectors.transpose();
   return 0.5 * (result + result.transpose());
 }
