@@ -537,12 +537,13 @@ public:
   ErrorObserver()
   {
     this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
+    this->Command->SetCallback([](vtkObject* caller, unsigned long event, void* self, void* data) {
       auto* o = static_cast<ErrorObserver*>(self);
       if (event == vtkCommand::ErrorEvent)
       {
         ++o->Errors;
         o->Last = data ? static_cast<const char*>(data) : "";
+        o->LastSource = caller;
       }
       else
       {
@@ -558,6 +559,7 @@ public:
   int Errors = 0;
   int Warnings = 0;
   std::string Last;
+  vtkObject* LastSource = nullptr;
 
 private:
   vtkNew<vtkCallbackCommand> Command;

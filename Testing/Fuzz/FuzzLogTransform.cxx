@@ -515,6 +515,18 @@ private:
     LCT_FUZZ_CHECK(inverse, "GetInverse is not a vtkLinearTransform");
     const Eigen::Matrix4d mi = MatrixOf(inverse);
     LCT_FUZZ_CHECK(AllFinite(mi), "GetInverse is not finite:\n" << Show(mi));
+    // KNOWN: D18 (Testing/Fuzz/README.md). VTK computes GetInverse() by DeepCopy + Inverse() on
+    // a hidden object and has no failure path: when the Polar log of M^-1 is refused (e.g. D6 for
+    // 8.1e5 I with a rotation part of 1e-59), the inverse silently holds the forward transform.
+    // The error goes once to that hidden object's output; later GetInverse() calls return the
+    // forward matrix without any error.
+    const lct::LogCoords reference = -CoordinatesOf(t);
+    const bool noInverseLog = t->GetParametrisation() == vtkLogTransform::POLAR &&
+      !lct::logarithm(lct::inverseAffine(m), lct::Parametrisation::Polar, &reference).ok();
+    if (lct_fuzz::Known("D18", noInverseLog))
+    {
+      return;
+    }
     if (this->ErrorCount() == errors && WellConditioned(m, 1e6) && !wound)
     {
       LCT_FUZZ_CHECK(RelativeError(mi, lct::inverseAffine(m)) <= 1e-2,

@@ -30,6 +30,8 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -462,6 +464,31 @@ private:
         this->ErrorCount() > errors, "InterpolateTransform returned 0 without an error");
       LCT_FUZZ_CHECK(lct_fuzz::SameBits(before.data(), after.data(), 16),
         "InterpolateTransform failed but changed the output");
+      // Accepted Polar keys must interpolate inside their range (MatrixLog may lack a real log
+      // between keys that are not neighbours; Bezier builds logs of control points). A failure
+      // must be an overflow (NonFinite), the output's own SetMatrix, or the known D19.
+      const bool explained = this->Keys.empty() || std::isnan(t) || this->MatrixLog() ||
+        this->Path->GetInterpolationType() ==
+          vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER ||
+        this->Errors.LastSource != this->Path.Get() ||
+        this->Errors.Last.find("NaN or Inf") != std::string::npos;
+      if (!explained)
+      {
+        std::vector<Eigen::Matrix4d> matrices;
+        for (const auto& [time, key] : this->Keys)
+        {
+          matrices.push_back(key.Matrix);
+        }
+        if (lct_fuzz::Known("D19",
+              lct_fuzz::MissingKeyLog(
+                matrices, lct::Parametrisation::Polar, this->Path->GetConsistentRotation())))
+        {
+          return;
+        }
+      }
+      LCT_FUZZ_CHECK(explained,
+        "InterpolateTransform (Polar) failed at t = " << t << " with accepted keys: "
+                                                      << this->Errors.Last);
       return;
     }
     LCT_FUZZ_CHECK(!this->Keys.empty() && !std::isnan(t),
@@ -494,7 +521,10 @@ private:
     {
       const Eigen::Matrix4d& k = key->second.Matrix;
       const double error = (after - k).norm() / std::max(1.0, k.norm());
-      LCT_FUZZ_CHECK(error <= 1e-6,
+      // Into a vtkLogTransform the key also makes a round trip through that output's log and
+      // exp, which at condition 1e6 keeps ~1e-6 (as FuzzLogTransform measures SetMatrix).
+      const double tolerance = form == 2 ? 1e-2 : 1e-6;
+      LCT_FUZZ_CHECK(error <= tolerance,
         "InterpolateTransform does not reproduce the key at t = " << t << " (error " << error
                                                                   << ")\nkey\n"
                                                                   << Show(k) << "\ngot\n"
