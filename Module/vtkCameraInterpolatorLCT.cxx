@@ -242,7 +242,13 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << " keys; key rejected.");
     return 0;
   }
-  const auto parameters = lct::fromCameraKey(key.value);
+  const auto parameters = lct::fromCameraKey(key.value, &why);
+  if (!parameters)
+  {
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << why
+                  << "; key rejected.");
+    return 0;
+  }
   this->Internal->Add(Key{ t, key.value, lct::cameraMatrix(parameters.value) });
   this->Modified();
   return 1;

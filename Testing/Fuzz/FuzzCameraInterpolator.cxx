@@ -237,8 +237,9 @@ private:
       "AddCamera: error reporting does not match the result");
     if (valid)
     {
-      this->Keys[t] =
-        ShadowKey{ p.parallelProjection, p, lct::cameraMatrix(lct::fromCameraKey(key.value)) };
+      const auto restored = lct::fromCameraKey(key.value);
+      LCT_FUZZ_CHECK(restored.ok(), "lct::fromCameraKey fails on a key lct::toCameraKey accepted");
+      this->Keys[t] = ShadowKey{ p.parallelProjection, p, lct::cameraMatrix(restored.value) };
     }
   }
 
