@@ -42,6 +42,9 @@ const char* describe(Status status) noexcept
              "the matrix)";
     case Status::InvalidArgument:
       return "invalid argument (count, index or size)";
+    case Status::RankDeficient:
+      return "the basis is rank deficient (the logs of its transforms are linearly dependent, "
+             "to the rank tolerance), so the coefficients of a transform are not unique";
   }
   return "unknown status";
 }

@@ -27,7 +27,8 @@ enum class Status
   MagnitudeOutOfRange, ///< MatrixLog only: eigenvalue magnitudes beyond 2^+-450
   InaccurateResult,    ///< the result cannot be computed accurately in double from these inputs
   NumericalFailure,    ///< an eigensolver did not converge (a defect: please report the input)
-  InvalidArgument      ///< sizes, counts or indices that make no sense
+  InvalidArgument,     ///< sizes, counts or indices that make no sense
+  RankDeficient        ///< a basis whose logs are linearly dependent: coefficients not unique
 };
 
 /// A one-line English description of `status`, suitable for an error message.

@@ -1,0 +1,146 @@
+/**
+ * @file LogBasis.h
+ * @brief Factoring transformations onto a basis in log space (Alexa 2002 §6.2).
+ *
+ * Log coordinates form a vector space, so a transform T can be written as the "linear
+ * combination" T = exp(sum_i x_i log B_i) of basis transforms B_i, and a transform outside their
+ * span has a nearest transform inside it ("constraining a transform"). The coefficients x
+ * minimise ||log T - o - sum_i x_i log B_i|| for an origin o (0, or the mean of the examples a
+ * centred basis was built from).
+ *
+ * Alexa inverts the Gram matrix V_ij = <log B_i, log B_j> by SVD to learn the basis's rank and
+ * condition, and maps the inner products <log T, log B_j> through V^-1. We take the SVD of the
+ * basis itself instead, W B = P diag(sigma) Q^T with W the inner product's square root below:
+ * the Gram matrix is B^T W^2 B, its singular values are sigma^2, and not forming it keeps twice
+ * the digits (the coefficients are those of V^-1 to rounding). The rank counts the sigma_i above
+ * rankTolerance sigma_1; the reported condition number is that of V, (sigma_1 / sigma_k)^2.
+ *
+ * Inner product: Alexa's entry-wise product of the 4x4 log matrices (eq. 8),
+ * <A, B> = sum_ij a_ij b_ij. In log coordinates c = (u, w, Y) (lct/LogCoords.h) the log matrix is
+ * [hat(w) + Y, u; 0 0], and since skew and symmetric parts are orthogonal,
+ *
+ *   <a, b> = u . u' + 2 w . w' + sum_k Y_kk Y'_kk + 2 sum_{k<l} Y_kl Y'_kl,
+ *
+ * i.e. W = diag(1, 1, 1, sqrt2, sqrt2, sqrt2, 1, 1, 1, sqrt2, sqrt2, sqrt2). The same formula is
+ * used for the Polar coordinates (l, w, Y) (the matrix [hat(w) + Y, l; 0 0] of Kaji & Ochiai's
+ * R^12). For rotations, <log R(a, theta), log R(b, phi)> = 2 theta phi (a . b): twice the dot
+ * product of the rotation vectors. With Alexa's basis R_x(phi), R_y(phi), R_z(phi), the
+ * factors (x, y, z) of R(a, theta) are therefore 2 phi theta a: the axis is (x, y, z) / |(x, y, z)|
+ * and the angle |(x, y, z)| / (2 phi) (the paper prints "(x + y + z) / phi", a misprint).
+ *
+ * A basis has at most 12 independent vectors (the dimension of the log space), so every size
+ * here is fixed at compile time and nothing allocates.
+ */
+#ifndef lct_LogBasis_h
+#define lct_LogBasis_h
+
+#include "vtkLCTModule.h"
+
+#include "lct/LogCoords.h"
+#include "lct/Status.h"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+
+namespace lct
+{
+
+/// The dimension of the log space: no basis has more independent vectors.
+constexpr int kLogDimension = 12;
+
+/// Relative singular value below which a basis direction counts as dependent: sigma_i <=
+/// 1e-8 sigma_1, a Gram condition number of 1e16, where double precision keeps no digit of the
+/// coefficients.
+constexpr double kDefaultRankTolerance = 1e-8;
+
+/// Coefficients: one per basis vector, at most 12.
+using BasisCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kLogDimension, 1>;
+
+/// The inner product <a, b> of the log matrices of two log coordinates (see the file comment).
+VTKLCT_EXPORT double logInnerProduct(const LogCoords& a, const LogCoords& b) noexcept;
+
+/// sqrt(<a, a>), without overflow for any finite coordinates.
+VTKLCT_EXPORT double logNorm(const LogCoords& a) noexcept;
+
+/// A basis of log coordinates, analysed: the subspace origin + span(vectors).
+struct LogBasis
+{
+  /// The basis vectors log B_i as columns (1..12 of them).
+  Eigen::Matrix<double, kLogDimension, Eigen::Dynamic, 0, kLogDimension, kLogDimension> vectors;
+  /// The point the span is taken about: 0 for a basis of transforms, the mean log of the
+  /// examples for a centred basis from examples.
+  LogCoords origin = LogCoords::Zero();
+  /// Singular values of W vectors, descending (their squares are those of the Gram matrix).
+  BasisCoefficients singularValues;
+  /// The number of singular values above rankTolerance * singularValues[0].
+  int rank = 0;
+  /// The rank tolerance the basis was analysed with.
+  double rankTolerance = kDefaultRankTolerance;
+  /// The Gram matrix's condition number (sigma_1 / sigma_k)^2; +Inf when rank < count.
+  double conditionNumber = 0.0;
+
+  int size() const noexcept { return static_cast<int>(this->vectors.cols()); }
+  bool fullRank() const noexcept { return this->rank == this->size(); }
+
+  /// P: the first `rank` left singular vectors of W vectors, an orthonormal basis of W span.
+  Eigen::Matrix<double, kLogDimension, Eigen::Dynamic, 0, kLogDimension, kLogDimension> range;
+  /// Q diag(1 / sigma) P^T over the first `rank` singular values: x = solver W (c - origin)
+  /// (the least-norm coefficients; the only ones when the basis has full rank).
+  Eigen::Matrix<double, Eigen::Dynamic, kLogDimension, 0, kLogDimension, kLogDimension> solver;
+};
+
+/// The analysed basis of `count` log vectors about `origin`. Fails with InvalidArgument (count
+/// 0 or above 12, a rank tolerance outside [0, 1)) or NonFinite (a non-finite vector or
+/// origin). A rank-deficient basis is a valid result (rank < count, see factorOntoBasis).
+VTKLCT_EXPORT Result<LogBasis> analyseBasis(const LogCoords* vectors, std::size_t count,
+  const LogCoords& origin = LogCoords::Zero(), double rankTolerance = kDefaultRankTolerance);
+
+/// A basis found from examples, with what it leaves out.
+struct ExampleBasis
+{
+  /// Orthonormal vectors (in <.,.>), the principal directions of the examples in order of
+  /// decreasing spread; origin = their mean when centred, else 0.
+  LogBasis basis;
+  /// All min(count, 12) singular values of the example matrix (rows W (c_i - origin)),
+  /// descending: singularValues[i]^2 / count is the mean square spread along direction i, kept
+  /// or not (the kept ones are the first basis.size()).
+  BasisCoefficients singularValues;
+};
+
+/// The orthonormal basis of the span of `count` example logs (Alexa §6.2: the logs written as
+/// rows of a matrix and decomposed by SVD), about their mean when `centred`, keeping the
+/// directions whose singular value exceeds rankTolerance times the largest, and at most
+/// `maximumRank` of them when it is positive. Fails with InvalidArgument (no examples, a
+/// tolerance outside [0, 1), a negative maximumRank), NonFinite (a non-finite example),
+/// OutOfRange (the mean or the centred logs overflow), or RankDeficient when the examples span
+/// nothing (all equal to the origin).
+VTKLCT_EXPORT Result<ExampleBasis> basisFromExamples(const LogCoords* examples, std::size_t count,
+  bool centred, double rankTolerance = kDefaultRankTolerance, int maximumRank = 0);
+
+/// The factoring of c onto a basis.
+struct BasisFactors
+{
+  BasisCoefficients coefficients; ///< x, one per basis vector
+  LogCoords projection;           ///< origin + sum_i x_i vectors_i: the nearest point of the span
+  double residual = 0.0;          ///< logNorm(c - projection): the distance from the span
+};
+
+/// Coefficients of c (Alexa §6.2) and the residual. Fails with RankDeficient when the basis
+/// is (the coefficients are not unique; projectOntoBasis is still defined), NonFinite for a
+/// non-finite c, OutOfRange when the coefficients overflow.
+VTKLCT_EXPORT Result<BasisFactors> factorOntoBasis(const LogBasis& basis, const LogCoords& c);
+
+/// The nearest point of the subspace to c, with the residual; defined for rank-deficient
+/// bases too (the span of the independent directions), where `coefficients` are the ones of
+/// least norm (unique when the basis has full rank). Fails with NonFinite or OutOfRange.
+VTKLCT_EXPORT Result<BasisFactors> projectOntoBasis(const LogBasis& basis, const LogCoords& c);
+
+/// origin + sum_i x_i vectors_i. Fails with InvalidArgument (a coefficient count other than the
+/// basis size), NonFinite (a non-finite coefficient) or OutOfRange (overflow).
+VTKLCT_EXPORT Result<LogCoords> combineBasis(
+  const LogBasis& basis, const BasisCoefficients& coefficients);
+
+} // namespace lct
+
+#endif
