@@ -1,5 +1,7 @@
 #include "lct/LogBasis.h"
 
+#include "lct/Conditioning.h"
+
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -15,10 +17,9 @@ using LogVector = Eigen::Matrix<double, kLogDimension, 1>;
 using BasisMatrix =
   Eigen::Matrix<double, kLogDimension, Eigen::Dynamic, 0, kLogDimension, kLogDimension>;
 
-/// W: the square root of the inner product's metric (1 on translations and diagonal stretches,
-/// sqrt 2 on the rotation vector and the off-diagonal stretches, which appear twice in the log
-/// matrix).
-const LogVector& metricRoot()
+} // namespace
+
+const LogCoords& logMetricRoot() noexcept
 {
   static const LogVector w = [] {
     LogVector v;
@@ -29,24 +30,16 @@ const LogVector& metricRoot()
   return w;
 }
 
+namespace
+{
+const LogCoords& metricRoot()
+{
+  return logMetricRoot();
+}
+
 bool allFinite(const LogCoords& c)
 {
   return c.allFinite();
-}
-
-/// A power of two within a factor 2 of max |m_ij| (1 for a zero matrix): dividing by it is
-/// exact and brings the entries into [-2, 2].
-template <typename Derived>
-double powerOfTwoAbove(const Eigen::MatrixBase<Derived>& m)
-{
-  const double largest = m.cwiseAbs().maxCoeff();
-  if (!(largest > 0.0))
-  {
-    return 1.0;
-  }
-  int exponent = 0;
-  std::frexp(largest, &exponent);
-  return std::ldexp(1.0, exponent - 1);
 }
 
 /// W d with d = c - origin; fails when the difference overflows.
@@ -81,6 +74,24 @@ Result<BasisFactors> factor(const LogBasis& basis, const LogVector& weighted)
 }
 
 } // namespace
+
+LogCoords meanLog(const LogCoords* logs, std::size_t count, std::size_t stride) noexcept
+{
+  // Two passes: the mean of c_i / n (no overflow for finite input), then the mean of the
+  // residuals, which recovers the digits the first pass lost to cancellation.
+  const double n = static_cast<double>(count);
+  LogCoords mean = LogCoords::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    mean += logs[i * stride] / n;
+  }
+  LogCoords correction = LogCoords::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    correction += (logs[i * stride] - mean) / n;
+  }
+  return mean + correction;
+}
 
 double logInnerProduct(const LogCoords& a, const LogCoords& b) noexcept
 {
@@ -118,8 +129,8 @@ Result<LogBasis> analyseBasis(
     basis.vectors.col(i) = vectors[i];
   }
   // The SVD of W B scaled by a power of two, so that no square in it overflows or underflows.
-  const double scale = powerOfTwoAbove(basis.vectors);
-  const BasisMatrix weighted = metricRoot().asDiagonal() * (basis.vectors / scale);
+  const int e = unitScaleExponent(basis.vectors);
+  const BasisMatrix weighted = metricRoot().asDiagonal() * scaledByPowerOfTwo(basis.vectors, -e);
   const Eigen::JacobiSVD<BasisMatrix> svd(weighted, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const BasisCoefficients sigma = svd.singularValues();
   int rank = 0;
@@ -128,13 +139,13 @@ Result<LogBasis> analyseBasis(
     ++rank;
   }
   basis.rank = rank;
-  basis.singularValues = sigma * scale;
+  basis.singularValues = scaledByPowerOfTwo(sigma, e);
   basis.conditionNumber = rank == k ? (sigma[0] / sigma[k - 1]) * (sigma[0] / sigma[k - 1])
                                     : std::numeric_limits<double>::infinity();
   basis.range = svd.matrixU().leftCols(rank);
   // The solver in the input's units: 1 / (sigma scale) may overflow for bases near the bottom
   // of the double range, which is refused rather than handed on.
-  const BasisCoefficients inverse = (sigma.head(rank) * scale).cwiseInverse();
+  const BasisCoefficients inverse = scaledByPowerOfTwo(sigma.head(rank), e).cwiseInverse();
   basis.solver =
     svd.matrixV().leftCols(rank) * inverse.asDiagonal() * svd.matrixU().leftCols(rank).transpose();
   if (!basis.singularValues.allFinite() || !basis.solver.allFinite())
@@ -155,23 +166,7 @@ Result<ExampleBasis> basisFromExamples(
   {
     return Result<ExampleBasis>::failure(Status::NonFinite);
   }
-  const double n = static_cast<double>(count);
-  LogCoords origin = LogCoords::Zero();
-  if (centred)
-  {
-    // Two passes: the mean of c_i / n (no overflow for finite input), then the mean of the
-    // residuals, which recovers the digits the first pass lost to cancellation.
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      origin += examples[i] / n;
-    }
-    LogCoords correction = LogCoords::Zero();
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      correction += (examples[i] - origin) / n;
-    }
-    origin += correction;
-  }
+  const LogCoords origin = centred ? meanLog(examples, count) : LogCoords::Zero();
   Eigen::Matrix<double, Eigen::Dynamic, kLogDimension> rows(
     static_cast<Eigen::Index>(count), kLogDimension);
   for (std::size_t i = 0; i < count; ++i)
@@ -182,8 +177,8 @@ Result<ExampleBasis> basisFromExamples(
   {
     return Result<ExampleBasis>::failure(Status::OutOfRange);
   }
-  const double scale = powerOfTwoAbove(rows);
-  rows = (rows / scale) * metricRoot().asDiagonal();
+  const int e = unitScaleExponent(rows);
+  rows = scaledByPowerOfTwo(rows, -e) * metricRoot().asDiagonal();
   // Column-pivoting QR first (JacobiSVD's preconditioner for tall matrices): O(count) work and
   // only the 12 x 12 right singular vectors are formed.
   const Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, kLogDimension>,
@@ -211,7 +206,7 @@ Result<ExampleBasis> basisFromExamples(
   {
     return Result<ExampleBasis>::failure(basis.status);
   }
-  ExampleBasis result{ basis.value, sigma * scale };
+  ExampleBasis result{ basis.value, scaledByPowerOfTwo(sigma, e) };
   result.basis.rankTolerance = rankTolerance;
   if (!result.singularValues.allFinite())
   {

@@ -57,6 +57,16 @@ constexpr double kDefaultRankTolerance = 1e-8;
 /// Coefficients: one per basis vector, at most 12.
 using BasisCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kLogDimension, 1>;
 
+/// W, the square root of the inner product's metric: 1 on translations and diagonal stretches,
+/// sqrt 2 on the rotation vector and the off-diagonal stretches (twice in the log matrix).
+VTKLCT_EXPORT const LogCoords& logMetricRoot() noexcept;
+
+/// The mean of logs[0], logs[stride], ..., logs[(count - 1) stride] (count > 0), in two passes
+/// (the second recovers what the first lost to cancellation); overflows only when the exact
+/// mean's terms do (|c| near the top of the double range, of both signs).
+VTKLCT_EXPORT LogCoords meanLog(
+  const LogCoords* logs, std::size_t count, std::size_t stride = 1) noexcept;
+
 /// The inner product <a, b> of the log matrices of two log coordinates (see the file comment).
 VTKLCT_EXPORT double logInnerProduct(const LogCoords& a, const LogCoords& b) noexcept;
 

@@ -1,0 +1,386 @@
+// PCA of transform sequences in log space (lct/SequencePCA.h, vtkTransformSequencePCA; Alexa
+// 2002 §6.3): exact reconstruction with every component, low-rank data, Eckart-Young optimality,
+// weights, continuous rotation branches, the root channel, eigen-motions and bad input.
+#include "RandomTransforms.h"
+#include "VtkTestHelpers.h"
+
+#include "lct/LogBasis.h"
+#include "lct/Parametrisation.h"
+#include "lct/SequencePCA.h"
+
+#include "vtkTransformSequencePCA.h"
+
+#include "vtkCollection.h"
+#include "vtkDoubleArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using lct::LogCoords;
+using lct_test::ErrorCounter;
+using lct_test::fromVtk;
+using lct_test::kPi;
+using lct_test::RandomTransforms;
+
+LogCoords randomCoords(RandomTransforms& random, double size)
+{
+  LogCoords c;
+  for (int i = 0; i < 12; ++i)
+  {
+    c[i] = size * random.Normal();
+  }
+  return c;
+}
+
+/// A smooth random animation: channel c at frame f is exp(a_c + sin(f / 7 + c) b_c + f / F e_c).
+std::vector<Eigen::Matrix4d> animation(
+  RandomTransforms& random, int frames, int channels, lct::Parametrisation p)
+{
+  std::vector<LogCoords> a, b, e;
+  for (int c = 0; c < channels; ++c)
+  {
+    a.push_back(randomCoords(random, 0.3));
+    b.push_back(randomCoords(random, 0.3));
+    e.push_back(randomCoords(random, 0.3));
+  }
+  std::vector<Eigen::Matrix4d> out;
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      const LogCoords log = a[c] + std::sin(f / 7.0 + c) * b[c] + (double(f) / frames) * e[c];
+      out.push_back(lct::exponential(log, p).value);
+    }
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkCollection> frameOf(
+  const std::vector<Eigen::Matrix4d>& all, int frame, int channels)
+{
+  auto frameItems = vtkSmartPointer<vtkCollection>::New();
+  for (int c = 0; c < channels; ++c)
+  {
+    vtkNew<vtkMatrix4x4> m;
+    lct_test::toVtk(all[static_cast<std::size_t>(frame * channels + c)], m);
+    frameItems->AddItem(m);
+  }
+  return frameItems;
+}
+
+struct Watched
+{
+  vtkNew<vtkTransformSequencePCA> pca;
+  vtkNew<ErrorCounter> errors;
+  Watched() { pca->AddObserver(vtkCommand::ErrorEvent, errors); }
+  void Load(const std::vector<Eigen::Matrix4d>& all, int frames, int channels)
+  {
+    for (int f = 0; f < frames; ++f)
+    {
+      ASSERT_EQ(this->pca->AddFrame(frameOf(all, f, channels)), 1);
+    }
+  }
+};
+} // namespace
+
+TEST(SequencePCA, EveryComponentReproducesTheInput)
+{
+  RandomTransforms random(31);
+  for (const int p : { vtkTransformSequencePCA::POLAR, vtkTransformSequencePCA::MATRIX_LOG })
+  {
+    const int frames = 60, channels = 7;
+    const auto all = animation(random, frames, channels, static_cast<lct::Parametrisation>(p));
+    Watched w;
+    w.pca->SetParametrisation(p);
+    w.Load(all, frames, channels);
+    ASSERT_EQ(w.pca->Compute(), 1);
+    const int k = w.pca->GetNumberOfComponents();
+    EXPECT_GE(k, 3);
+    EXPECT_LE(k, frames);
+    EXPECT_NEAR(w.pca->GetExplainedFraction(k), 1.0, 1e-12);
+    double worst = 0.0;
+    vtkNew<vtkMatrix4x4> m;
+    for (int f = 0; f < frames; ++f)
+    {
+      for (int c = 0; c < channels; ++c)
+      {
+        ASSERT_EQ(w.pca->GetReconstructedTransform(f, c, k, m), 1);
+        worst = std::max(worst,
+          (fromVtk(m) - all[static_cast<std::size_t>(f * channels + c)]).cwiseAbs().maxCoeff());
+      }
+    }
+    EXPECT_LE(worst, 1e-10);
+    EXPECT_EQ(w.errors->Count, 0);
+  }
+}
+
+TEST(SequencePCA, LowRankDataHasExactlyThatManyComponents)
+{
+  RandomTransforms random(32);
+  const int frames = 80, channels = 4;
+  std::vector<LogCoords> mean, d[3];
+  for (int c = 0; c < channels; ++c)
+  {
+    mean.push_back(randomCoords(random, 1.0));
+    for (auto& direction : d)
+    {
+      direction.push_back(randomCoords(random, 1.0));
+    }
+  }
+  std::vector<LogCoords> logs;
+  for (int f = 0; f < frames; ++f)
+  {
+    const double s[3] = { random.Normal(), random.Normal(), 0.01 * random.Normal() };
+    for (int c = 0; c < channels; ++c)
+    {
+      logs.push_back(mean[c] + s[0] * d[0][c] + s[1] * d[1][c] + s[2] * d[2][c]);
+    }
+  }
+  const auto pca = lct::sequencePCA(logs.data(), frames, channels);
+  ASSERT_TRUE(pca.ok());
+  EXPECT_EQ(pca.value.size(), 3);
+  EXPECT_NEAR(pca.value.explainedFraction(3), 1.0, 1e-14);
+  EXPECT_LT(pca.value.explainedFraction(2), 1.0 - 1e-7);
+  // The components are orthonormal in the weighted log inner product.
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double inner = 0.0;
+      for (int c = 0; c < channels; ++c)
+      {
+        inner += lct::logInnerProduct(pca.value.components.block<12, 1>(12 * c, i),
+          pca.value.components.block<12, 1>(12 * c, j));
+      }
+      EXPECT_NEAR(inner, i == j ? 1.0 : 0.0, 1e-12);
+    }
+  }
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      const auto r = lct::reconstructLog(pca.value, f, c, 3);
+      ASSERT_TRUE(r.ok());
+      EXPECT_LE((r.value - logs[static_cast<std::size_t>(f * channels + c)]).norm(), 1e-12);
+    }
+  }
+}
+
+// Eckart-Young: the squared reconstruction error with r components is the sum of the dropped
+// squared singular values, and weights move the error away from the heavy channel.
+TEST(SequencePCA, TruncationErrorIsTheDroppedVarianceAndWeightsSteerIt)
+{
+  RandomTransforms random(33);
+  const int frames = 40, channels = 3;
+  std::vector<LogCoords> logs;
+  for (int i = 0; i < frames * channels; ++i)
+  {
+    logs.push_back(randomCoords(random, 1.0));
+  }
+  const double weights[3] = { 1.0, 50.0, 1.0 };
+  for (const bool weighted : { false, true })
+  {
+    const auto pca = lct::sequencePCA(logs.data(), frames, channels, weighted ? weights : nullptr);
+    ASSERT_TRUE(pca.ok());
+    ASSERT_EQ(pca.value.size(), 36);
+    for (const int r : { 0, 1, 5, 20, 36 })
+    {
+      double error = 0.0;
+      for (int f = 0; f < frames; ++f)
+      {
+        for (int c = 0; c < channels; ++c)
+        {
+          const LogCoords off = lct::reconstructLog(pca.value, f, c, r).value -
+            logs[static_cast<std::size_t>(f * channels + c)];
+          error += pca.value.weights[static_cast<std::size_t>(c)] * lct::logInnerProduct(off, off);
+        }
+      }
+      const double dropped = pca.value.singularValues.tail(36 - r).squaredNorm();
+      EXPECT_NEAR(error, dropped, 1e-10 * (1.0 + dropped)) << "r = " << r;
+    }
+  }
+  // With weight 50 on channel 1, its share of the error of 12 components falls.
+  auto channelError = [&](const double* w) {
+    const auto pca = lct::sequencePCA(logs.data(), frames, channels, w);
+    double e = 0.0;
+    for (int f = 0; f < frames; ++f)
+    {
+      e += (lct::reconstructLog(pca.value, f, 1, 12).value -
+        logs[static_cast<std::size_t>(f * channels + 1)])
+             .squaredNorm();
+    }
+    return e;
+  };
+  EXPECT_LT(channelError(weights), 0.2 * channelError(nullptr));
+}
+
+// A joint spinning twice around z: Polar logs taken against the previous frame stay on a line
+// (one component explains everything); principal MatrixLog logs jump at 180 degrees: reported.
+TEST(SequencePCA, SpinBeyond180DegreesNeedsContinuousLogs)
+{
+  const int frames = 100; // no frame at exactly 180 degrees (no real log at all)
+  std::vector<Eigen::Matrix4d> all;
+  for (int f = 0; f < frames; ++f)
+  {
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+    m.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd(4.0 * kPi * f / (frames - 1), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    m(0, 3) = 0.01 * f;
+    all.push_back(m);
+  }
+  Watched polar;
+  polar.Load(all, frames, 1);
+  ASSERT_EQ(polar.pca->Compute(), 1);
+  EXPECT_EQ(polar.pca->GetNumberOfComponents(), 1);
+  vtkNew<vtkMatrix4x4> m;
+  ASSERT_EQ(polar.pca->GetReconstructedTransform(77, 0, 1, m), 1);
+  EXPECT_LE((fromVtk(m) - all[77]).cwiseAbs().maxCoeff(), 1e-12);
+
+  Watched matrixLog;
+  matrixLog.pca->SetParametrisationToMatrixLog();
+  matrixLog.Load(all, frames, 1);
+  EXPECT_EQ(matrixLog.pca->Compute(), 0);
+  EXPECT_NE(matrixLog.errors->Last.find("turns through 180 degrees between frames 24 and 25"),
+    std::string::npos)
+    << matrixLog.errors->Last;
+  EXPECT_EQ(matrixLog.pca->GetNumberOfComponents(), 0);
+}
+
+TEST(SequencePCA, RootChannelIsFactoredOutAndEigenMotionsAreTransforms)
+{
+  RandomTransforms random(34);
+  const int frames = 30, channels = 4;
+  auto all = animation(random, frames, channels, lct::Parametrisation::Polar);
+  // A wild root motion that would dominate the analysis.
+  for (int f = 0; f < frames; ++f)
+  {
+    Eigen::Matrix4d root = Eigen::Matrix4d::Identity();
+    root.topLeftCorner<3, 3>() = random.Rotation();
+    root.topRightCorner<3, 1>() = 100.0 * Eigen::Vector3d::Random();
+    all[static_cast<std::size_t>(f * channels)] = root;
+  }
+  Watched w;
+  w.Load(all, frames, channels);
+  w.pca->SetRootChannel(0);
+  ASSERT_EQ(w.pca->Compute(), 1);
+  vtkNew<vtkMatrix4x4> m;
+  for (int f = 0; f < frames; ++f)
+  {
+    ASSERT_EQ(w.pca->GetReconstructedTransform(f, 0, 0, m), 1);
+    EXPECT_EQ(fromVtk(m), all[static_cast<std::size_t>(f * channels)]);
+  }
+  // About their means, the other channels move along sin(f / 7), cos(f / 7) and f: 3
+  // components, which the root's wild motion would otherwise swamp.
+  EXPECT_EQ(w.pca->GetNumberOfComponents(), 3);
+  EXPECT_NEAR(w.pca->GetExplainedFraction(3), 1.0, 1e-12);
+  vtkNew<vtkDoubleArray> fractions;
+  ASSERT_EQ(w.pca->GetExplainedVariance(fractions), 1);
+  ASSERT_EQ(fractions->GetNumberOfTuples(), w.pca->GetNumberOfComponents());
+  EXPECT_GE(fractions->GetValue(0), 0.5);
+  // Eigen-motion at s = 0 is the mean; at s it moves along the component.
+  vtkNew<vtkMatrix4x4> mean, motion;
+  ASSERT_EQ(w.pca->GetMeanTransform(2, mean), 1);
+  ASSERT_EQ(w.pca->GetEigenMotion(0, 2, 0.0, motion), 1);
+  EXPECT_LE((fromVtk(mean) - fromVtk(motion)).norm(), 1e-14);
+  ASSERT_EQ(w.pca->GetEigenMotion(0, 2, 2.0, motion), 1);
+  EXPECT_GT((fromVtk(mean) - fromVtk(motion)).norm(), 1e-3);
+  vtkNew<vtkDoubleArray> scores;
+  ASSERT_EQ(w.pca->GetScores(5, scores), 1);
+  EXPECT_EQ(scores->GetNumberOfTuples(), w.pca->GetNumberOfComponents());
+  EXPECT_EQ(w.errors->Count, 0);
+}
+
+TEST(SequencePCA, BadInputIsRefused)
+{
+  Watched w;
+  int errors = 0;
+  auto refused = [&](int returned, const char* fragment) {
+    EXPECT_EQ(returned, 0) << fragment;
+    EXPECT_EQ(w.errors->Count, ++errors) << fragment;
+    EXPECT_NE(w.errors->Last.find(fragment), std::string::npos)
+      << "wanted \"" << fragment << "\" in: " << w.errors->Last;
+  };
+  vtkNew<vtkMatrix4x4> m;
+  vtkNew<vtkDoubleArray> a;
+  refused(w.pca->Compute(), "no frames");
+  refused(w.pca->GetReconstructedTransform(0, 0, 1, m), "Compute() first");
+  refused(w.pca->GetExplainedVariance(a), "Compute() first");
+  refused(w.pca->AddFrame(nullptr), "null collection");
+  vtkNew<vtkCollection> frame;
+  refused(w.pca->AddFrame(frame), "empty collection");
+  frame->AddItem(m);
+  frame->AddItem(a);
+  refused(w.pca->AddFrame(frame), "item 1 is vtkDoubleArray");
+  EXPECT_EQ(w.pca->GetNumberOfFrames(), 0);
+  frame->RemoveAllItems();
+  vtkNew<vtkMatrix4x4> m2;
+  vtkNew<vtkTransform> t;
+  t->RotateX(20.0);
+  frame->AddItem(m);
+  frame->AddItem(t);
+  ASSERT_EQ(w.pca->AddFrame(frame), 1);
+  ASSERT_EQ(w.pca->AddFrame(frame), 1);
+  frame->AddItem(m2);
+  refused(w.pca->AddFrame(frame), "3 transforms where every frame has 2 channels");
+  EXPECT_EQ(w.pca->GetNumberOfFrames(), 2);
+  refused(w.pca->SetChannelWeight(2, 1.0), "channel 2 is outside [0, 2)");
+  refused(w.pca->SetChannelWeight(0, 0.0), "not finite and positive");
+  refused(w.pca->SetChannelWeight(0, std::numeric_limits<double>::quiet_NaN()),
+    "not finite and positive");
+  w.pca->SetRootChannel(5);
+  refused(w.pca->Compute(), "root channel 5 is outside [-1, 2)");
+  w.pca->SetRootChannel(-1);
+  // A NaN transform is named by frame and channel.
+  vtkNew<vtkCollection> bad;
+  vtkNew<vtkMatrix4x4> nan;
+  nan->SetElement(1, 2, std::numeric_limits<double>::quiet_NaN());
+  bad->AddItem(m);
+  bad->AddItem(nan);
+  ASSERT_EQ(w.pca->AddFrame(bad), 1);
+  refused(w.pca->Compute(), "frame 2, channel 1: the matrix or coordinates contain NaN");
+  w.pca->RemoveAllFrames();
+  ASSERT_EQ(w.pca->AddFrame(frame), 1); // 3 channels now
+  ASSERT_EQ(w.pca->AddFrame(frame), 1);
+  ASSERT_EQ(w.pca->Compute(), 1);
+  refused(w.pca->GetReconstructedTransform(2, 0, 1, m), "frame 2, channel 0 is outside");
+  refused(w.pca->GetReconstructedTransform(0, 3, 1, m), "channel 3 is outside");
+  refused(w.pca->GetEigenMotion(0, 0, std::numeric_limits<double>::infinity(), m), "s = inf");
+  refused(w.pca->GetScores(-1, a), "frame -1 is outside [0, 2)");
+  // Queries after the input changed.
+  ASSERT_EQ(w.pca->SetChannelWeight(1, 2.0), 1);
+  refused(w.pca->GetMeanTransform(0, m), "the input changed since Compute()");
+  // Only the root channel.
+  w.pca->RemoveAllFrames();
+  vtkNew<vtkCollection> single;
+  single->AddItem(t);
+  ASSERT_EQ(w.pca->AddFrame(single), 1);
+  w.pca->SetRootChannel(0);
+  refused(w.pca->Compute(), "nothing to analyse");
+  // Core: invalid arguments.
+  const LogCoords logs[2] = { LogCoords::Zero(), LogCoords::Ones() };
+  EXPECT_EQ(lct::sequencePCA(logs, 0, 1).status, lct::Status::InvalidArgument);
+  EXPECT_EQ(lct::sequencePCA(nullptr, 2, 1).status, lct::Status::InvalidArgument);
+  const double negative[1] = { -1.0 };
+  EXPECT_EQ(lct::sequencePCA(logs, 2, 1, negative).status, lct::Status::InvalidArgument);
+  LogCoords withNaN[2] = { LogCoords::Zero(), LogCoords::Ones() };
+  withNaN[1][4] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(lct::sequencePCA(withNaN, 2, 1).status, lct::Status::NonFinite);
+  const auto ok = lct::sequencePCA(logs, 2, 1);
+  ASSERT_TRUE(ok.ok());
+  EXPECT_EQ(lct::reconstructLog(ok.value, 2, 0, 1).status, lct::Status::InvalidArgument);
+  EXPECT_EQ(lct::componentLog(ok.value, 1, 0, 1.0).status, lct::Status::InvalidArgument);
+  EXPECT_EQ(lct::componentLog(ok.value, 0, 0, std::numeric_limits<double>::quiet_NaN()).status,
+    lct::Status::NonFinite);
+  const LogCoords wide[2] = { LogCoords::Constant(1.7e308), LogCoords::Constant(-1.7e308) };
+  const auto w2 = lct::sequencePCA(wide, 2, 1);
+  EXPECT_TRUE(w2.ok() || w2.status == lct::Status::OutOfRange);
+}
