@@ -262,8 +262,13 @@ int vtkTransformSequencePCA::Compute()
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransformSequencePCA::Analysed(const char* caller)
+bool vtkTransformSequencePCA::Analysed(const char* caller, const void* output)
 {
+  if (!output)
+  {
+    vtkErrorMacro(<< caller << ": null output.");
+    return false;
+  }
   const Internals& in = *this->Internal;
   if (!in.HasAnalysis || in.ComputeTime.GetMTime() < this->GetMTime())
   {
@@ -301,12 +306,7 @@ int vtkTransformSequencePCA::GetNumberOfComponents()
 //------------------------------------------------------------------------------
 int vtkTransformSequencePCA::GetExplainedVariance(vtkDoubleArray* fractions)
 {
-  if (!fractions)
-  {
-    vtkErrorMacro(<< "GetExplainedVariance: null array.");
-    return 0;
-  }
-  if (!this->Analysed("GetExplainedVariance"))
+  if (!this->Analysed("GetExplainedVariance", fractions))
   {
     return 0;
   }
@@ -325,8 +325,9 @@ int vtkTransformSequencePCA::GetExplainedVariance(vtkDoubleArray* fractions)
 //------------------------------------------------------------------------------
 double vtkTransformSequencePCA::GetExplainedFraction(int components)
 {
-  return this->Analysed("GetExplainedFraction") ? this->Internal->Pca.explainedFraction(components)
-                                                : 0.0;
+  return this->Analysed("GetExplainedFraction", this)
+    ? this->Internal->Pca.explainedFraction(components)
+    : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -334,12 +335,8 @@ int vtkTransformSequencePCA::GetReconstructedTransform(
   int frame, int channel, int components, vtkMatrix4x4* result)
 {
   const char* caller = "GetReconstructedTransform";
-  if (!result || !this->Analysed(caller))
+  if (!this->Analysed(caller, result))
   {
-    if (!result)
-    {
-      vtkErrorMacro(<< caller << ": null result matrix.");
-    }
     return 0;
   }
   const Internals& in = *this->Internal;
@@ -370,12 +367,8 @@ int vtkTransformSequencePCA::GetEigenMotion(
   int component, int channel, double s, vtkMatrix4x4* result)
 {
   const char* caller = "GetEigenMotion";
-  if (!result || !this->Analysed(caller))
+  if (!this->Analysed(caller, result))
   {
-    if (!result)
-    {
-      vtkErrorMacro(<< caller << ": null result matrix.");
-    }
     return 0;
   }
   const Internals& in = *this->Internal;
@@ -405,12 +398,8 @@ int vtkTransformSequencePCA::GetEigenMotion(
 int vtkTransformSequencePCA::GetMeanTransform(int channel, vtkMatrix4x4* result)
 {
   const char* caller = "GetMeanTransform";
-  if (!result || !this->Analysed(caller))
+  if (!this->Analysed(caller, result))
   {
-    if (!result)
-    {
-      vtkErrorMacro(<< caller << ": null result matrix.");
-    }
     return 0;
   }
   const Internals& in = *this->Internal;
@@ -446,12 +435,7 @@ int vtkTransformSequencePCA::GetMeanTransform(int channel, vtkMatrix4x4* result)
 //------------------------------------------------------------------------------
 int vtkTransformSequencePCA::GetScores(int frame, vtkDoubleArray* scores)
 {
-  if (!scores)
-  {
-    vtkErrorMacro(<< "GetScores: null array.");
-    return 0;
-  }
-  if (!this->Analysed("GetScores"))
+  if (!this->Analysed("GetScores", scores))
   {
     return 0;
   }

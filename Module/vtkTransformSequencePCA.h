@@ -166,7 +166,9 @@ private:
   void operator=(const vtkTransformSequencePCA&) = delete;
 
   struct Internals;
-  bool Analysed(const char* caller);
+  /// Whether the analysis is current, with an error naming `caller` when not or when the
+  /// caller's `output` is null.
+  bool Analysed(const char* caller, const void* output);
   int Output(const double log[12], vtkMatrix4x4* result, const char* caller);
 
   Internals* Internal;
