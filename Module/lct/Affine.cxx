@@ -41,7 +41,13 @@ Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m)
   const int e = unitScaleExponent(linear);
   const Eigen::Matrix3d inverseLinear =
     scaledByPowerOfTwo(Eigen::Matrix3d(scaledByPowerOfTwo(linear, -e).inverse()), -e);
-  return makeAffine(inverseLinear, -(inverseLinear * m.topRightCorner<3, 1>()));
+  // -A^-1 t at the unit size of t as well: with t near DBL_MAX the products of the row sums
+  // overflow before they cancel (the inverse of a map whose own inverse is in range).
+  const Eigen::Vector3d t = m.topRightCorner<3, 1>();
+  const int k = unitScaleExponent(t);
+  const Eigen::Vector3d unitT = scaledByPowerOfTwo(t, -k);
+  return makeAffine(
+    inverseLinear, scaledByPowerOfTwo(Eigen::Vector3d(-(inverseLinear * unitT)), k));
 }
 
 double accurateLogDeterminant(const Eigen::Matrix4d& m)

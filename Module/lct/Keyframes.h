@@ -31,15 +31,16 @@ public:
   double minimumTime() const { return this->empty() ? 0.0 : this->Keys.begin()->first; }
   double maximumTime() const { return this->empty() ? 0.0 : this->Keys.rbegin()->first; }
 
-  /// The key at exactly time t, or null.
+  /// The key at exactly time t, or null. (NaN compares unordered with every time, so std::map
+  /// would take it as equivalent to a key: it has none.)
   const Key* find(double t) const
   {
-    const auto it = this->Keys.find(t);
+    const auto it = std::isnan(t) ? this->Keys.end() : this->Keys.find(t);
     return it == this->Keys.end() ? nullptr : &it->second;
   }
   Key* find(double t)
   {
-    const auto it = this->Keys.find(t);
+    const auto it = std::isnan(t) ? this->Keys.end() : this->Keys.find(t);
     return it == this->Keys.end() ? nullptr : &it->second;
   }
   /// The nearest key strictly before / after time t, or null.
@@ -92,7 +93,7 @@ public:
   /// Removes the key at time t; false when there is none.
   bool erase(double t)
   {
-    if (this->Keys.erase(t) == 0)
+    if (std::isnan(t) || this->Keys.erase(t) == 0)
     {
       return false;
     }

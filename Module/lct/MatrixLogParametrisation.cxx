@@ -74,13 +74,17 @@ BlockFunction blockFunction(
   ScalarFunction f, const Eigen::Matrix3d& a, const Eigen::Vector3d& t, double extraNode)
 {
   BlockFunction out;
-  const Eigen::RealSchur<Eigen::Matrix3d> schur(a);
+  // The Schur form of A 2^-e is Q (T 2^-e) Q^T, exactly: Eigen's iteration forms norms and
+  // squares of the entries, which overflow for entries near the end of the double range (exp
+  // of coordinates ~1e308 did not converge), so it runs on the unit-size matrix.
+  const int e = unitScaleExponent(a);
+  const Eigen::RealSchur<Eigen::Matrix3d> schur(scaledByPowerOfTwo(a, -e));
   if (schur.info() != Eigen::Success)
   {
     out.status = Status::NumericalFailure;
     return out;
   }
-  const Eigen::Matrix3d& tm = schur.matrixT();
+  const Eigen::Matrix3d tm = scaledByPowerOfTwo(schur.matrixT(), e);
   const Eigen::Matrix3d& q = schur.matrixU();
   // Block structure: a 2x2 block at the top (rows 0-1), at the bottom (rows 1-2), or none.
   const bool blockTop = tm(1, 0) != 0.0;
@@ -104,6 +108,18 @@ BlockFunction blockFunction(
     }
   }
   nodes[3] = extraNode;
+  // Eigenvalues beyond 2^500 (or overflowing in the 2x2 block's discriminant) only come from
+  // exp of huge coordinates: a real part beyond 710 overflows anyway, an imaginary one is an
+  // angle with no digits left below a turn, and their divided differences would leave the range.
+  constexpr double kLargestNode = 3.27e150; // ~2^500
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(std::abs(nodes[i]) <= kLargestNode))
+    {
+      out.status = Status::OutOfRange;
+      return out;
+    }
+  }
   if (f != ScalarFunction::Exp)
   {
     for (int i = 0; i < 3; ++i)
@@ -250,15 +266,22 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
     return R::failure(Status::NonFinite);
   }
   const Eigen::Matrix3d l = logLinearPart(c);
+  // Skew plus symmetric part can overflow for coordinates near DBL_MAX: no exp in range then.
+  if (!l.allFinite())
+  {
+    return R::failure(Status::OutOfRange);
+  }
   const BlockFunction block = blockFunction(ScalarFunction::Exp, l, translationPart(c), 0.0);
   if (block.status != Status::Ok)
   {
     return R::failure(block.status);
   }
   // det exp(L) = e^tr(L): a result below the normal range, or one too ill-conditioned to hold
-  // its smallest stretch, is refused like the same matrix given to matrixLog.
+  // its smallest stretch, is refused like the same matrix given to matrixLog. exp(L) is never
+  // singular: a smallest singular value that rounded to 0 is an underflow, OutOfRange.
   Status range = checkRange(block.linear, l.trace());
-  range = range == Status::MagnitudeOutOfRange ? Status::OutOfRange : range;
+  range =
+    range == Status::MagnitudeOutOfRange || range == Status::Singular ? Status::OutOfRange : range;
   if (range != Status::Ok)
   {
     return R::failure(range);

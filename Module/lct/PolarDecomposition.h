@@ -48,8 +48,9 @@ struct PolarFactors
   Eigen::Matrix3d stretch() const;
 };
 
-/// Fails with NonFinite, NegativeDeterminant, Singular (det A = 0, or sigma_min = 0 in double)
-/// or IllConditioned (sigma_max / sigma_min > kMaxConditionNumber).
+/// Fails with NonFinite, NegativeDeterminant, Singular (det A = 0, or sigma_min = 0 in double),
+/// IllConditioned (sigma_max / sigma_min > kMaxConditionNumber) or OutOfRange (sigma_min below
+/// the normal range: the stretch would be subnormal, with fewer digits than its input).
 VTKLCT_EXPORT Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a);
 
 /// The sign of det A, decided accurately: -1, 0 or +1 (NaN input gives 0).

@@ -123,7 +123,9 @@ Result<Eigen::Matrix4d> polarExp(const LogCoords& c)
     const Eigen::Matrix3d stretch = expSym(fromSymmetricVector(symmetricPart(c)), &bounds);
     // A stretch below the normal range has lost its digits (or is 0): the map is no longer
     // representable, rather than singular.
-    if (!(bounds[0] > kLowestLogStretch) || !stretch.allFinite())
+    // (A few ulps of 708 below log(DBL_MIN) are the rounding of the log of a stretch polarLog
+    // accepted, at least DBL_MIN: such a stretch keeps its 52 bits but one.)
+    if (!(bounds[0] > kLowestLogStretch - 1e-12) || !stretch.allFinite())
     {
       return R::failure(Status::OutOfRange);
     }

@@ -388,3 +388,45 @@ TEST(Robustness, PathMetricRefusesClosedPathsAndNaNPoints)
   EXPECT_EQ(metric->EvaluateCameras(orbit), 0);
   EXPECT_TRUE(contains(errors->Last, "NaN")) << errors->Last;
 }
+
+// Defects the fuzz targets found (Testing/Fuzz/README.md, the D ids), each at its regression input.
+
+TEST(FuzzFindings, D24RemoveAtNaNRemovesNothing)
+{
+  // std::map takes NaN as equivalent to any key (every comparison with it is false): RemoveCamera
+  // and RemoveTransform at NaN erased an arbitrary key, silently.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vtkNew<vtkCameraInterpolatorLCT> cameras;
+  vtkNew<vtkCamera> camera;
+  cameras->AddCamera(3.0, camera);
+  cameras->RemoveCamera(nan);
+  EXPECT_EQ(cameras->GetNumberOfCameras(), 1);
+  vtkNew<vtkTransformInterpolatorLCT> transforms;
+  vtkNew<vtkMatrix4x4> identity;
+  transforms->AddTransform(0.0, identity.Get());
+  transforms->AddTransform(1.0, identity.Get());
+  vtkNew<ErrorCounter> errors;
+  transforms->AddObserver(vtkCommand::ErrorEvent, errors);
+  transforms->RemoveTransform(nan);
+  EXPECT_EQ(transforms->GetNumberOfTransforms(), 2);
+}
+
+TEST(FuzzFindings, D25InverseOfAStateWithATranslationNearDblMax)
+{
+  // Accepted coordinates (translation -1e308 under a stretch e^3): Inverse() refused its own
+  // result, whose inverse is the state itself, as "overflows": lct::inverseAffine formed
+  // A (A^-1 t) with partial sums beyond DBL_MAX before they cancel. The header promises that
+  // Inverse() always succeeds.
+  const double c[12] = { -3.4427884565677744e+250, -1e+308, 1, 1, 1, 0.99999994947575033, 1,
+    0.999999999999997, 1, 1, 1, 0.99764093151316047 };
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(t->SetLogCoordinates(c), 1) << errors->Last;
+  t->Inverse();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  EXPECT_TRUE(allFinite(t->GetMatrix()));
+  t->Inverse();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  EXPECT_NEAR(t->GetMatrix()->GetElement(1, 3), -1e308, 1e294);
+}
