@@ -12,7 +12,7 @@
 #define lct_fuzz_FuzzRenderKeys_h
 
 #include "FuzzInput.h"
-#include "FuzzMatrixLogGuards.h"
+#include "FuzzMissingKeyLog.h"
 #include "RenderKeys.h"
 
 #include "vtkCameraInterpolatorLCT.h"
@@ -120,35 +120,15 @@ inline void RenderKeysLikeLctRender(const RenderKeys::Keys& keys)
   {
     tmin = std::min(tmin, key.Time);
     tmax = std::max(tmax, key.Time);
-    const auto k = lct::toCameraKey(ParametersOf(key.Camera));
-    const lct::CameraParameters p = ParametersOf(key.Camera);
-    // KNOWN: D16 (see FuzzCameraInterpolator.cxx): near / far over the distance overflows in
-    // lct::toCameraKey.
-    if (k &&
-      Known("D16",
-        !AllFinite(k.value.channels) || !(p.clippingRange[1] <= 1e300) ||
-          !(p.clippingRange[0] >= 1e-300)))
-    {
-      return;
-    }
     if (!cameraPath->AddCamera(key.Time, key.Camera))
     {
       return; // lct-render: "... is degenerate (rejected by vtkCameraInterpolatorLCT: ...)"
     }
   }
-  // KNOWN: D11 (see FuzzCorePieces.cxx): key times whose span overflows give NaN curve weights
-  // (and undefined behaviour for Subdivision). It breaks lct-render too: its frame time
-  // tmin + (tmax - tmin) i / (N - 1) is Inf * 0 = NaN at i = 0, so the first frame fails.
-  if (Known("D11", !std::isfinite(tmax - tmin)))
-  {
-    return;
-  }
-
   struct Track
   {
     std::string Name;
     vtkSmartPointer<vtkTransformInterpolatorLCT> Path;
-    double Largest = 0.0;
     bool MissingLog = false; // D19
   };
   std::vector<Track> tracks;
@@ -173,14 +153,6 @@ inline void RenderKeysLikeLctRender(const RenderKeys::Keys& keys)
       {
         return; // lct-render: "... is not a usable transform (rejected by ...)"
       }
-      for (double x : key.Matrix)
-      {
-        t.Largest = std::max(t.Largest, std::abs(x));
-      }
-    }
-    if (Known("D11", !std::isfinite(hi - lo)))
-    {
-      return;
     }
     std::map<double, Eigen::Matrix4d> sorted;
     for (const auto& key : track.Keys)
@@ -217,46 +189,39 @@ inline void RenderKeysLikeLctRender(const RenderKeys::Keys& keys)
 
   constexpr int N = 12;
   auto frameTime = [&](int i) { return N > 1 ? tmin + (tmax - tmin) * i / (N - 1) : tmin; };
-  double largestChannel = 0.0;
-  for (const auto& key : keys.Camera)
-  {
-    const auto k = lct::toCameraKey(ParametersOf(key.Camera));
-    largestChannel = std::max(largestChannel, k.value.channels.cwiseAbs().maxCoeff());
-  }
   for (int i = 0; i < N; ++i)
   {
     const double t = frameTime(i);
     for (const Track& track : tracks)
     {
       vtkNew<vtkMatrix4x4> k;
-      // KNOWN: D19 (FuzzMatrixLogGuards.h): accepted keys whose curve needs a refused log.
-      if (!track.Path->InterpolateTransform(t, k) && Known("D19", track.MissingLog))
+      // KNOWN: D19 (FuzzMissingKeyLog.h): accepted keys whose curve needs a refused log.
+      if (!track.Path->InterpolateTransform(t, k) &&
+        (Known("D19", track.MissingLog) || ExplainedRefusal(errors.Last)))
       {
         continue;
       }
       LCT_FUZZ_CHECK(track.Path->InterpolateTransform(t, k),
         "interpolating props." << track.Name << " at t = " << t << " failed: " << errors.Last);
-      const bool finite = AllFinite(k->GetData(), 16);
-      // KNOWN: D10 (see FuzzCorePieces.cxx): the reference key multiplied back overflows.
-      if (!finite && Known("D10", track.Largest > 1e290))
-      {
-        continue;
-      }
-      LCT_FUZZ_CHECK(finite,
+      LCT_FUZZ_CHECK(AllFinite(k->GetData(), 16),
         "props." << track.Name << " at t = " << t << " is not finite: " << Show(k->GetData(), 16));
     }
     vtkNew<vtkCamera> camera;
-    LCT_FUZZ_CHECK(cameraPath->InterpolateCamera(t, camera),
-      "interpolating the camera at t = " << t << " failed: " << errors.Last);
+    // vtkCameraInterpolatorLCT.h: refused (never non-finite) where a spline overshoots out of
+    // vtkCamera's range; the convex schemes (Linear, BSpline) stay within the keys.
+    const int type = cameraPath->GetInterpolationType();
+    const bool overshoot = type == vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE ||
+      type == vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
+    if (!cameraPath->InterpolateCamera(t, camera))
+    {
+      LCT_FUZZ_CHECK(overshoot && errors.Last.find("overshoot") != std::string::npos,
+        "interpolating the camera at t = " << t << " failed: " << errors.Last);
+      continue;
+    }
     const lct::CameraParameters c = ParametersOf(camera);
     const bool finite = AllFinite(c.position) && AllFinite(c.focalPoint) && AllFinite(c.viewUp) &&
       std::isfinite(c.viewAngle) && std::isfinite(c.parallelScale) && AllFinite(c.windowCenter) &&
       AllFinite(c.viewShear) && AllFinite(c.clippingRange);
-    // KNOWN: D17 (see FuzzCameraInterpolator.cxx): log channels exponentiated unchecked.
-    if (!finite && Known("D17", largestChannel >= 650.0))
-    {
-      continue;
-    }
     LCT_FUZZ_CHECK(finite,
       "the camera at t = " << t << " is not finite: position " << Show(c.position.transpose())
                            << ", clipping " << Show(c.clippingRange.transpose()));

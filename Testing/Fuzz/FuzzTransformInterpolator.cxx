@@ -10,13 +10,14 @@
 // finite and affine; a call returning 0 reported an error and left the output untouched; a key
 // time is reproduced by the interpolating types.
 #include "FuzzInput.h"
-#include "FuzzMatrixLogGuards.h"
+#include "FuzzMissingKeyLog.h"
 
 #include "vtkLogTransform.h"
 #include "vtkTransformInterpolatorLCT.h"
 
 #include "lct/Affine.h"
 #include "lct/Parametrisation.h"
+#include "lct/PolarParametrisation.h"
 
 #include "vtkAssembly.h"
 #include "vtkMatrix4x4.h"
@@ -63,15 +64,6 @@ bool WellConditioned(const Eigen::Matrix4d& m, double condition)
     m.topRightCorner<3, 1>().norm() <= 1e30;
 }
 
-// KNOWN: D1, D2 (Testing/Fuzz/README.md). In MatrixLog the interpolator takes logs and exps of
-// matrices derived from the keys, which cannot be predicted cheaply, so MatrixLog is exercised
-// with tame keys only (lct_fuzz::Tame); Polar gets every key. Invalid keys are refused before
-// any log is taken, so they always go in (to test the refusal).
-bool Tame(const Eigen::Matrix4d& m)
-{
-  return lct::validateAffine(m) != lct::Status::Ok || lct_fuzz::Tame(m);
-}
-
 /// What the interpolator should hold.
 struct ShadowKey
 {
@@ -111,19 +103,6 @@ private:
   bool MatrixLog() const
   {
     return this->Path->GetParametrisation() == vtkTransformInterpolatorLCT::MATRIX_LOG;
-  }
-
-  bool AllTame() const
-  {
-    for (const auto& [t, key] : this->Keys)
-    {
-      if (!Tame(key.Matrix) || (key.HasIncoming && !Tame(key.Incoming)) ||
-        (key.HasOutgoing && !Tame(key.Outgoing)))
-      {
-        return false;
-      }
-    }
-    return true;
   }
 
   /// std::map::find treats NaN as equivalent to every key (NaN breaks the ordering).
@@ -166,34 +145,6 @@ private:
     }
   }
 
-  // KNOWN: D15 (Testing/Fuzz/README.md). The automatic Bezier controls take the tangent
-  // (log(K_k^-1 K_k+1) - log(K_k^-1 K_k-1)) / (t_k+1 - t_k-1) and dereference both relative logs
-  // (vtkTransformInterpolatorLCT.cxx:87), but the key logs only guarantee the forward one,
-  // log(K_k^-1 K_k+1). When the backward one does not exist (Polar: the singularity threshold is
-  // not symmetric under inversion; MatrixLog: the a-posteriori check), InterpolateTransform with
-  // the Bezier type dereferences a null pointer (SEGV). E.g. I at t = 0 and
-  // [[0, -1, 0], [0, 0, 1.7775523980694726e-15], [-1, 0, 0]] at t = -2, Bezier, t = -2.
-  // True where the mirror of that computation finds a missing log.
-  bool BezierMeetsMissingLog() const
-  {
-    const lct::Parametrisation p =
-      this->MatrixLog() ? lct::Parametrisation::MatrixLog : lct::Parametrisation::Polar;
-    const ShadowKey* previous = nullptr;
-    for (auto it = this->Keys.begin(); it != this->Keys.end(); ++it)
-    {
-      const ShadowKey& key = it->second;
-      const bool last = std::next(it) == this->Keys.end();
-      const bool automatic = (previous && !key.HasIncoming) || (!last && !key.HasOutgoing);
-      if (automatic && previous &&
-        !lct::logarithm(lct::inverseAffine(key.Matrix) * previous->Matrix, p).ok())
-      {
-        return true;
-      }
-      previous = &key;
-    }
-    return false;
-  }
-
   void CheckBookkeeping()
   {
     const int n = this->Path->GetNumberOfTransforms();
@@ -213,20 +164,6 @@ private:
     const double t = this->Time();
     const Eigen::Matrix4d m = this->In.Matrix();
     const int form = this->In.Int(0, 7);
-    // KNOWN: D11 (see FuzzCorePieces.cxx): key times whose span overflows give NaN curve
-    // weights and, for Subdivision, undefined behaviour in lct::curveWeights.
-    if (std::isfinite(t) && !this->Keys.empty() &&
-      lct_fuzz::Known("D11",
-        !std::isfinite(
-          std::max(t, this->Keys.rbegin()->first) - std::min(t, this->Keys.begin()->first))))
-    {
-      return;
-    }
-    if (this->MatrixLog() && !Tame(m))
-    {
-      lct_fuzz::Known("D1+D2 (MatrixLog keys kept tame)", true);
-      return;
-    }
     LCT_FUZZ_TRACE("AddTransform t " << t << " form " << form << "\n" << Show(m));
     const int errors = this->ErrorCount();
     int result = 0;
@@ -262,16 +199,16 @@ private:
           prop->SetScale(this->In.Scale());
         }
         stored = FromVtk(prop->GetMatrix());
-        if (this->MatrixLog() && !Tame(stored))
-        {
-          return;
-        }
         result = this->Path->AddTransform(t, static_cast<vtkProp3D*>(prop.Get()));
         break;
       }
     }
+    // Key times must keep the span of the times finite (lct/Curves.h: the weights divide by it).
+    const bool finiteSpan = this->Keys.empty() ||
+      std::isfinite(
+        std::max(t, this->Keys.rbegin()->first) - std::min(t, this->Keys.begin()->first));
     const bool valid =
-      form != 0 && std::isfinite(t) && lct::validateAffine(stored) == lct::Status::Ok;
+      form != 0 && std::isfinite(t) && finiteSpan && lct::validateAffine(stored) == lct::Status::Ok;
     if (result == 1)
     {
       LCT_FUZZ_CHECK(valid,
@@ -325,10 +262,6 @@ private:
     const bool hasOutgoing = this->In.Bool();
     const Eigen::Matrix4d incoming = this->In.Matrix();
     const Eigen::Matrix4d outgoing = this->In.Matrix();
-    if (this->MatrixLog() && ((hasIncoming && !Tame(incoming)) || (hasOutgoing && !Tame(outgoing))))
-    {
-      return;
-    }
     LCT_FUZZ_TRACE("SetBezierControls t " << t << " in " << hasIncoming << " out " << hasOutgoing
                                           << "\n"
                                           << Show(incoming) << "\n"
@@ -340,9 +273,11 @@ private:
     const int result = this->Path->SetBezierControls(
       t, hasIncoming ? in.Get() : nullptr, hasOutgoing ? out.Get() : nullptr);
     const auto it = this->Find(t);
-    const bool valid = it != this->Keys.end() &&
-      (!hasIncoming || lct::validateAffine(incoming) == lct::Status::Ok) &&
-      (!hasOutgoing || lct::validateAffine(outgoing) == lct::Status::Ok);
+    // A control is validated like a key on its own: it must have a Polar log (finite, affine,
+    // det > 0, within the conditioning and range of the core).
+    const auto usable = [](const Eigen::Matrix4d& m) { return lct::polarLog(m).ok(); };
+    const bool valid = it != this->Keys.end() && (!hasIncoming || usable(incoming)) &&
+      (!hasOutgoing || usable(outgoing));
     LCT_FUZZ_CHECK(result == (valid ? 1 : 0),
       "SetBezierControls returned " << result << " for a " << (valid ? "valid" : "invalid")
                                     << " call");
@@ -363,11 +298,6 @@ private:
     const int p = choice < 3
       ? vtkTransformInterpolatorLCT::POLAR
       : (choice < 6 ? vtkTransformInterpolatorLCT::MATRIX_LOG : this->In.Int(-2, 4));
-    if (p == vtkTransformInterpolatorLCT::MATRIX_LOG && !this->AllTame())
-    {
-      lct_fuzz::Known("D1+D2 (MatrixLog keys kept tame)", true);
-      return;
-    }
     LCT_FUZZ_TRACE("SetParametrisation " << p);
     const int old = this->Path->GetParametrisation();
     const int errors = this->ErrorCount();
@@ -402,12 +332,6 @@ private:
         break;
     }
     const int form = this->In.Int(0, 2);
-    if (this->Path->GetInterpolationType() ==
-        vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER &&
-      lct_fuzz::Known("D15", this->BezierMeetsMissingLog()))
-    {
-      return;
-    }
     LCT_FUZZ_TRACE("InterpolateTransform t "
       << t << " form " << form << " type " << this->Path->GetInterpolationType() << " "
       << (this->MatrixLog() ? "MatrixLog" : "Polar") << " consistent "
@@ -437,19 +361,6 @@ private:
       }
       default:
       {
-        if (this->LogOutputIsMatrixLog)
-        {
-          // The output's SetMatrix takes a MatrixLog log of the result: guard it (D1/D2) by
-          // computing the same result first.
-          vtkNew<vtkMatrix4x4> probe;
-          const int errorsBefore = this->Errors.Errors;
-          if (this->Path->InterpolateTransform(t, probe.Get()) &&
-            lct_fuzz::KnownCubicLog(FromVtk(probe)))
-          {
-            return;
-          }
-          this->Errors.Errors = errorsBefore;
-        }
         const double mark[16] = { 1, 0, 0, 12345.0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
         this->LogOutput->SetMatrix(mark);
         before = FromVtk(this->LogOutput->GetMatrix());
@@ -466,12 +377,14 @@ private:
         "InterpolateTransform failed but changed the output");
       // Accepted Polar keys must interpolate inside their range (MatrixLog may lack a real log
       // between keys that are not neighbours; Bezier builds logs of control points). A failure
-      // must be an overflow (NonFinite), the output's own SetMatrix, or the known D19.
-      const bool explained = this->Keys.empty() || std::isnan(t) || this->MatrixLog() ||
+      // must be a refusal lct/KeyLogs.h documents for the combination (a result out of range,
+      // too ill-conditioned, or inaccurate between ill-conditioned keys), the output's own
+      // SetMatrix, or the known D19.
+      const bool explained = this->Keys.empty() || !std::isfinite(t) || this->MatrixLog() ||
         this->Path->GetInterpolationType() ==
           vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER ||
         this->Errors.LastSource != this->Path.Get() ||
-        this->Errors.Last.find("NaN or Inf") != std::string::npos;
+        lct_fuzz::ExplainedRefusal(this->Errors.Last);
       if (!explained)
       {
         std::vector<Eigen::Matrix4d> matrices;
@@ -491,23 +404,9 @@ private:
                                                       << this->Errors.Last);
       return;
     }
-    LCT_FUZZ_CHECK(!this->Keys.empty() && !std::isnan(t),
-      "InterpolateTransform succeeded without keys or at NaN");
+    LCT_FUZZ_CHECK(!this->Keys.empty() && std::isfinite(t),
+      "InterpolateTransform succeeded without keys or at a non-finite t");
     LCT_FUZZ_CHECK(this->ErrorCount() == errors, "InterpolateTransform returned 1 with an error");
-    if (!AllFinite(after))
-    {
-      // KNOWN: D10 (see FuzzCorePieces.cxx): the reference key is multiplied back onto a finite
-      // relative result without a check, so keys near the overflow threshold give Ok with Inf.
-      double largest = 0.0;
-      for (const auto& [time, key] : this->Keys)
-      {
-        largest = std::max(largest, key.Matrix.cwiseAbs().maxCoeff());
-      }
-      if (lct_fuzz::Known("D10", largest > 1e290))
-      {
-        return;
-      }
-    }
     LCT_FUZZ_CHECK(AllFinite(after) && after.row(3) == Eigen::RowVector4d(0.0, 0.0, 0.0, 1.0),
       "InterpolateTransform returned 1 with a non-finite or non-affine output at t = "
         << t << "\n"
