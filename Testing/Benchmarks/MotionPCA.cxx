@@ -1,0 +1,416 @@
+// Alexa 2002 §6.3 on real motion capture: PCA of an animation's joint transforms in log space,
+// with his accounting beside the floats actually needed and the forward-kinematics error.
+//
+// For each CMU / boxing BVH file (assimp-testmodels) and r in {5, 10, 20, 40} components, two
+// schemes are compared:
+//  - Alexa: the principal MatrixLog 4x4 logs of every joint's local transform (root included)
+//    as one row per frame, uncentred SVD (his §6.3), truncated to r;
+//  - LCT: vtkLCT's lct::sequencePCA: Polar logs continuous in time (each taken against the
+//    previous frame's), centred at each joint's mean log (tangent PCA), the root joint factored
+//    out and kept exactly.
+// Every data row is rebuilt, forward kinematics (BVH.h) gives the world positions of every joint
+// and End Site, and the error is their distance to the recorded ones: mean, 99th percentile and
+// max, in % of the skeleton height H (the y extent of the rest pose, every channel 0).
+//
+// Accounting. Alexa's: F J 16 scalars against F r + J 16 r (he counts 16 per 4x4 log). Honest:
+// the file's own F C values (C channels per row) against what the scheme must store as float32:
+// the r scores per frame, the non-zero entries of the r components (log coordinates that vary
+// in the data; 6 of a joint's 16 at most), the means of those coordinates (LCT), and the root's
+// 6 values per frame (LCT). The factor is the ratio; neither counts entropy coding.
+//
+// Plain program: prints markdown. Usage: BenchMotionPCA [--check] [BVH directory]. --check exits
+// 1 unless LCT with every component reproduces every file to 1e-6 % of H (ctest runs it) and 77
+// without the data; --benchmark_* flags (scripts/bench passes them) are ignored.
+#include "BVH.h"
+
+#include "lct/LogBasis.h"
+#include "lct/Parametrisation.h"
+#include "lct/SequencePCA.h"
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+using lct_bench::BVHMotion;
+using lct_bench::Matrix4;
+constexpr int kSkipped = 77;
+const int kComponents[] = { 5, 10, 20, 40 };
+
+Eigen::Matrix4d toEigen(const Matrix4& m)
+{
+  return Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m.data());
+}
+
+Matrix4 fromEigen(const Eigen::Matrix4d& m)
+{
+  Matrix4 out;
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data()) = m;
+  return out;
+}
+
+struct Clip
+{
+  std::string name;
+  BVHMotion motion;
+  std::vector<int> animated; ///< joints with channels (End Sites have none)
+  int root = 0;              ///< index into animated of the ROOT (depth-first order: the first)
+  std::vector<std::vector<Matrix4>> locals;   ///< [frame][joint] for every joint
+  std::vector<std::vector<double>> positions; ///< [frame] x, y, z of every joint
+  double height = 0.0;
+};
+
+bool load(const std::string& path, Clip& clip)
+{
+  auto parsed = lct_bench::LoadBVH(path);
+  if (!parsed.Ok())
+  {
+    std::fprintf(stderr, "%s: %s\n", path.c_str(), parsed.error.c_str());
+    return false;
+  }
+  clip.name = std::filesystem::path(path).filename().string();
+  clip.motion = std::move(parsed.motion);
+  const BVHMotion& m = clip.motion;
+  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+  {
+    if (!m.joints[j].channels.empty())
+    {
+      clip.animated.push_back(j);
+    }
+  }
+  std::vector<Matrix4> world;
+  std::vector<double> restPositions;
+  {
+    const std::vector<double> zero(static_cast<std::size_t>(m.channelCount), 0.0);
+    std::vector<Matrix4> rest;
+    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    {
+      rest.push_back(lct_bench::LocalTransform(m, j, zero.data()));
+    }
+    lct_bench::ForwardKinematics(m, rest, world, restPositions);
+    double low = 1e300, high = -1e300;
+    for (std::size_t i = 1; i < restPositions.size(); i += 3)
+    {
+      low = std::min(low, restPositions[i]);
+      high = std::max(high, restPositions[i]);
+    }
+    clip.height = high - low;
+  }
+  for (int f = 0; f < m.frameCount; ++f)
+  {
+    std::vector<Matrix4> locals;
+    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    {
+      locals.push_back(lct_bench::LocalTransform(m, j, m.Frame(f)));
+    }
+    std::vector<double> p;
+    lct_bench::ForwardKinematics(m, locals, world, p);
+    clip.locals.push_back(std::move(locals));
+    clip.positions.push_back(std::move(p));
+  }
+  return true;
+}
+
+struct Error
+{
+  double mean = 0.0, p99 = 0.0, max = 0.0; ///< % of H
+};
+
+/// FK error of rebuilt local transforms of the animated joints ([frame][animated joint]).
+Error fkError(const Clip& clip, const std::vector<std::vector<Eigen::Matrix4d>>& rebuilt)
+{
+  std::vector<double> distances;
+  std::vector<Matrix4> world;
+  std::vector<double> p;
+  for (int f = 0; f < clip.motion.frameCount; ++f)
+  {
+    std::vector<Matrix4> locals = clip.locals[static_cast<std::size_t>(f)];
+    for (std::size_t a = 0; a < clip.animated.size(); ++a)
+    {
+      locals[static_cast<std::size_t>(clip.animated[a])] = fromEigen(rebuilt[f][a]);
+    }
+    lct_bench::ForwardKinematics(clip.motion, locals, world, p);
+    const std::vector<double>& q = clip.positions[static_cast<std::size_t>(f)];
+    for (std::size_t i = 0; i < p.size(); i += 3)
+    {
+      distances.push_back(std::hypot(p[i] - q[i], p[i + 1] - q[i + 1], p[i + 2] - q[i + 2]));
+    }
+  }
+  Error e;
+  for (double d : distances)
+  {
+    e.mean += d;
+  }
+  e.mean /= static_cast<double>(distances.size());
+  std::sort(distances.begin(), distances.end());
+  e.p99 = distances[static_cast<std::size_t>(0.99 * (distances.size() - 1))];
+  e.max = distances.back();
+  const double scale = 100.0 / clip.height;
+  return { e.mean * scale, e.p99 * scale, e.max * scale };
+}
+
+/// Log coordinates (over all frames and the given channels) whose value is not constant.
+int varyingCoordinates(const std::vector<lct::LogCoords>& logs, int frames, int channels,
+  std::vector<bool>* varying = nullptr)
+{
+  int count = 0;
+  std::vector<bool> v(static_cast<std::size_t>(12 * channels), false);
+  for (int c = 0; c < channels; ++c)
+  {
+    for (int k = 0; k < 12; ++k)
+    {
+      const double first = logs[static_cast<std::size_t>(c)][k];
+      for (int f = 1; f < frames; ++f)
+      {
+        if (std::abs(logs[static_cast<std::size_t>(f * channels + c)][k] - first) >
+          1e-12 * (1.0 + std::abs(first)))
+        {
+          v[static_cast<std::size_t>(12 * c + k)] = true;
+          ++count;
+          break;
+        }
+      }
+    }
+  }
+  if (varying)
+  {
+    *varying = v;
+  }
+  return count;
+}
+
+struct Row
+{
+  int r;
+  Error error;
+  double alexaFactor, honestFactor;
+  double seconds;
+};
+
+/// Alexa's scheme: uncentred SVD of the principal MatrixLog logs of every animated joint.
+std::vector<Row> alexa(const Clip& clip, bool& ok)
+{
+  const int frames = clip.motion.frameCount;
+  const int joints = static_cast<int>(clip.animated.size());
+  std::vector<lct::LogCoords> logs;
+  ok = true;
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int j : clip.animated)
+    {
+      const auto c = lct::logarithm(
+        toEigen(clip.locals[f][static_cast<std::size_t>(j)]), lct::Parametrisation::MatrixLog);
+      if (!c)
+      {
+        std::printf(
+          "  (Alexa: frame %d joint %d has no real log: %s)\n", f, j, lct::describe(c.status));
+        ok = false;
+        return {};
+      }
+      logs.push_back(c.value);
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  Eigen::MatrixXd rows(frames, 12 * joints);
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int a = 0; a < joints; ++a)
+    {
+      rows.block<1, 12>(f, 12 * a) = logs[static_cast<std::size_t>(f * joints + a)]
+                                       .cwiseProduct(lct::logMetricRoot())
+                                       .transpose();
+    }
+  }
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(rows, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Uncentred, the constant non-zero coordinates (the bone offsets) are stored too.
+  std::vector<bool> varying;
+  varyingCoordinates(logs, frames, joints, &varying);
+  int stored = 0;
+  for (int k = 0; k < 12 * joints; ++k)
+  {
+    stored +=
+      varying[static_cast<std::size_t>(k)] || logs[static_cast<std::size_t>(k / 12)][k % 12] != 0.0;
+  }
+  std::vector<Row> out;
+  for (int r : kComponents)
+  {
+    const int k = std::min<int>(r, static_cast<int>(svd.singularValues().size()));
+    const Eigen::MatrixXd approx = svd.matrixU().leftCols(k) *
+      svd.singularValues().head(k).asDiagonal() * svd.matrixV().leftCols(k).transpose();
+    std::vector<std::vector<Eigen::Matrix4d>> rebuilt(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f)
+    {
+      for (int a = 0; a < joints; ++a)
+      {
+        const lct::LogCoords c =
+          approx.block<1, 12>(f, 12 * a).transpose().cwiseQuotient(lct::logMetricRoot());
+        const auto m = lct::exponential(c, lct::Parametrisation::MatrixLog);
+        rebuilt[f].push_back(m ? m.value : Eigen::Matrix4d::Identity());
+      }
+    }
+    const double alexaFactor =
+      double(frames) * joints * 16 / (double(frames) * k + joints * 16.0 * k);
+    const double honest =
+      double(frames) * clip.motion.channelCount / (double(frames) * k + double(stored) * k);
+    out.push_back({ r, fkError(clip, rebuilt), alexaFactor, honest, seconds });
+  }
+  return out;
+}
+
+/// vtkLCT's scheme: Polar logs continuous in time, centred, root factored out.
+std::vector<Row> lctScheme(const Clip& clip, bool allComponents, Error* full)
+{
+  const int frames = clip.motion.frameCount;
+  const int joints = static_cast<int>(clip.animated.size()) - 1; // without the root
+  std::vector<int> analysed;
+  for (std::size_t a = 0; a < clip.animated.size(); ++a)
+  {
+    if (static_cast<int>(a) != clip.root)
+    {
+      analysed.push_back(clip.animated[a]);
+    }
+  }
+  std::vector<lct::LogCoords> logs(static_cast<std::size_t>(frames * joints));
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int a = 0; a < joints; ++a)
+    {
+      const lct::LogCoords* previous =
+        f > 0 ? &logs[static_cast<std::size_t>((f - 1) * joints + a)] : nullptr;
+      logs[static_cast<std::size_t>(f * joints + a)] =
+        lct::logarithm(toEigen(clip.locals[f][static_cast<std::size_t>(analysed[a])]),
+          lct::Parametrisation::Polar, previous)
+          .value;
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto pca = lct::sequencePCA(logs.data(), frames, joints);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int varying = varyingCoordinates(logs, frames, joints);
+  std::vector<Row> out;
+  auto rebuild = [&](int k) {
+    std::vector<std::vector<Eigen::Matrix4d>> rebuilt(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f)
+    {
+      for (std::size_t a = 0; a < clip.animated.size(); ++a)
+      {
+        if (static_cast<int>(a) == clip.root)
+        {
+          rebuilt[f].push_back(toEigen(clip.locals[f][static_cast<std::size_t>(clip.animated[a])]));
+          continue;
+        }
+        const int s = static_cast<int>(a) - (static_cast<int>(a) > clip.root ? 1 : 0);
+        const auto c = lct::reconstructLog(pca.value, f, s, k);
+        rebuilt[f].push_back(lct::exponential(c.value, lct::Parametrisation::Polar).value);
+      }
+    }
+    return fkError(clip, rebuilt);
+  };
+  if (allComponents && full)
+  {
+    *full = rebuild(pca.value.size());
+  }
+  for (int r : kComponents)
+  {
+    const int k = std::min(r, pca.value.size());
+    const double alexaFactor =
+      double(frames) * (joints + 1) * 16 / (double(frames) * k + (joints + 1) * 16.0 * k);
+    const double honest = double(frames) * clip.motion.channelCount /
+      (double(frames) * (k + 6) + double(varying) * (k + 1));
+    out.push_back({ r, rebuild(k), alexaFactor, honest, seconds });
+  }
+  return out;
+}
+
+void print(const char* scheme, const std::vector<Row>& rows)
+{
+  for (const Row& row : rows)
+  {
+    std::printf("| %s | %d | %.2f | %.2f | %.2f | %.1fx | %.1fx | %.0f |\n", scheme, row.r,
+      row.error.mean, row.error.p99, row.error.max, row.alexaFactor, row.honestFactor,
+      row.seconds * 1e3);
+  }
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  bool check = false;
+  std::string directory = "/usr/share/assimp/models/BVH";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--check")
+    {
+      check = true;
+    }
+    else if (arg.rfind("--benchmark", 0) == 0)
+    {
+      continue;
+    }
+    else if (arg == "--help")
+    {
+      std::printf("usage: %s [--check] [BVH directory]\n", argv[0]);
+      return 0;
+    }
+    else
+    {
+      directory = arg;
+    }
+  }
+  const char* files[] = { "01_01.bvh", "01_03.bvh", "Boxing_Toes.bvh" };
+  int status = 0;
+  bool any = false;
+  std::printf("## Alexa §6.3: PCA of joint transforms in log space\n\n");
+  std::printf("| scheme | components | mean %%H | p99 %%H | max %%H | Alexa's factor | "
+              "honest factor | SVD ms |\n|---|---|---|---|---|---|---|---|\n");
+  for (const char* file : files)
+  {
+    const std::string path = directory + "/" + file;
+    if (!std::filesystem::exists(path))
+    {
+      continue;
+    }
+    Clip clip;
+    if (!load(path, clip))
+    {
+      return 1;
+    }
+    any = true;
+    std::printf("| **%s** | %d frames, %zu joints, %d channels, H = %.2f | | | | | | |\n",
+      clip.name.c_str(), clip.motion.frameCount, clip.animated.size(), clip.motion.channelCount,
+      clip.height);
+    bool alexaOk = false;
+    const auto a = alexa(clip, alexaOk);
+    if (alexaOk)
+    {
+      print("Alexa", a);
+    }
+    Error full;
+    print("LCT", lctScheme(clip, true, &full));
+    std::printf("| LCT, every component | | %.1e | | %.1e | | | |\n", full.mean, full.max);
+    if (check && !(full.max <= 1e-6))
+    {
+      std::fprintf(
+        stderr, "%s: every component reproduces to %.3g %% of H, not 1e-6\n", file, full.max);
+      status = 1;
+    }
+  }
+  if (!any)
+  {
+    std::printf(
+      "skipped: no BVH files in %s (Debian package assimp-testmodels)\n", directory.c_str());
+    return check ? kSkipped : 0;
+  }
+  return status;
+}
