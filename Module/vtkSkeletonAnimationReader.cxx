@@ -1,0 +1,510 @@
+#include "vtkSkeletonAnimationReader.h"
+
+#include "lct/Skeleton.h"
+
+#include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+vtkStandardNewMacro(vtkSkeletonAnimationReader);
+
+namespace
+{
+/// Bounds on what a file can make the reader allocate (3 10^7 transforms are 3.8 GB).
+constexpr std::size_t kMaxJoints = 10000;
+constexpr std::size_t kMaxTransforms = 30000000;
+
+using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
+
+Eigen::Matrix4d toEigen(const aiMatrix4x4& m)
+{
+  Eigen::Matrix4d out;
+  out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
+    m.d4;
+  return out;
+}
+
+/// The index of the last key at or before `time` (0 before the first), and the fraction of
+/// the way to the next one.
+template <typename Key>
+std::pair<unsigned, double> bracket(const Key* keys, unsigned count, double time)
+{
+  const Key* after =
+    std::upper_bound(keys, keys + count, time, [](double t, const Key& k) { return t < k.mTime; });
+  if (after == keys)
+  {
+    return { 0u, 0.0 };
+  }
+  const unsigned i = static_cast<unsigned>(after - keys) - 1;
+  if (i + 1 >= count || !(keys[i + 1].mTime > keys[i].mTime))
+  {
+    return { i, 0.0 };
+  }
+  return { i, (time - keys[i].mTime) / (keys[i + 1].mTime - keys[i].mTime) };
+}
+
+Eigen::Vector3d sampleVector(
+  const aiVectorKey* keys, unsigned count, double time, const Eigen::Vector3d& fallback)
+{
+  if (count == 0)
+  {
+    return fallback;
+  }
+  const auto [i, s] = bracket(keys, count, time);
+  const Eigen::Vector3d a(keys[i].mValue.x, keys[i].mValue.y, keys[i].mValue.z);
+  if (s == 0.0)
+  {
+    return a;
+  }
+  const Eigen::Vector3d b(keys[i + 1].mValue.x, keys[i + 1].mValue.y, keys[i + 1].mValue.z);
+  return (1.0 - s) * a + s * b;
+}
+
+Eigen::Quaterniond sampleRotation(
+  const aiQuatKey* keys, unsigned count, double time, const Eigen::Quaterniond& fallback)
+{
+  if (count == 0)
+  {
+    return fallback;
+  }
+  const auto [i, s] = bracket(keys, count, time);
+  const aiQuaternion& qa = keys[i].mValue;
+  const Eigen::Quaterniond a(qa.w, qa.x, qa.y, qa.z);
+  if (s == 0.0)
+  {
+    return a;
+  }
+  const aiQuaternion& qb = keys[i + 1].mValue;
+  return a.slerp(s, Eigen::Quaterniond(qb.w, qb.x, qb.y, qb.z));
+}
+
+struct Node
+{
+  const aiNode* node;
+  int parent;
+};
+
+/// The skeleton of `animation` in `scene`, depth first: each tree of animated nodes from its
+/// top-most animated node down, with every descendant.
+std::vector<Node> skeletonNodes(
+  const aiNode* root, const std::map<std::string, const aiNodeAnim*>& channels)
+{
+  std::vector<Node> nodes;
+  // Iterative depth-first walk (a hostile file can nest deeply): (node, skeleton parent, inside).
+  struct Visit
+  {
+    const aiNode* node;
+    int parent;
+    bool inside;
+  };
+  std::vector<Visit> stack{ { root, -1, false } };
+  while (!stack.empty() && nodes.size() <= kMaxJoints)
+  {
+    const Visit v = stack.back();
+    stack.pop_back();
+    const bool animated = channels.count(v.node->mName.C_Str()) > 0;
+    int index = v.parent;
+    bool inside = v.inside;
+    if (inside || animated)
+    {
+      nodes.push_back({ v.node, v.parent });
+      index = static_cast<int>(nodes.size()) - 1;
+      inside = true;
+    }
+    // Children pushed in reverse so that they come out in file order.
+    for (unsigned c = v.node->mNumChildren; c-- > 0;)
+    {
+      if (v.node->mChildren[c])
+      {
+        stack.push_back({ v.node->mChildren[c], inside ? index : -1, inside });
+      }
+    }
+  }
+  return nodes;
+}
+} // namespace
+
+struct vtkSkeletonAnimationReader::Internals
+{
+  bool Loaded = false;
+  std::string LoadedFile;
+  vtkMTimeType LoadedMTime = 0;
+  lct::SkeletalAnimation Animation;
+  double StartTime = 0.0;
+  std::vector<double> Times;
+};
+
+//------------------------------------------------------------------------------
+vtkSkeletonAnimationReader::vtkSkeletonAnimationReader()
+  : Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkSkeletonAnimationReader::~vtkSkeletonAnimationReader()
+{
+  this->SetFileName(nullptr);
+  delete this->Internal;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSkeletonAnimationReader::Load()
+{
+  Internals& in = *this->Internal;
+  if (in.Loaded && in.LoadedMTime == this->GetMTime())
+  {
+    return true;
+  }
+  in = Internals();
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro(<< "no file name.");
+    return false;
+  }
+  const std::string file = this->FileName;
+  Assimp::Importer importer;
+  // No post-processing: the node hierarchy and the keys as the file has them.
+  const aiScene* scene = importer.ReadFile(file, 0);
+  if (!scene || !scene->mRootNode)
+  {
+    vtkErrorMacro(<< file << ": not readable as an animation file: " << importer.GetErrorString());
+    return false;
+  }
+  if (scene->mNumAnimations == 0 || !scene->mAnimations[0] ||
+    scene->mAnimations[0]->mNumChannels == 0)
+  {
+    vtkErrorMacro(<< file << ": the file has no skeletal animation.");
+    return false;
+  }
+  const aiAnimation& animation = *scene->mAnimations[0];
+  std::map<std::string, const aiNodeAnim*> channels;
+  unsigned frames = 0;
+  const aiNodeAnim* longest = nullptr;
+  for (unsigned c = 0; c < animation.mNumChannels; ++c)
+  {
+    const aiNodeAnim* channel = animation.mChannels[c];
+    if (!channel)
+    {
+      continue;
+    }
+    channels[channel->mNodeName.C_Str()] = channel;
+    const unsigned keys =
+      std::max({ channel->mNumPositionKeys, channel->mNumRotationKeys, channel->mNumScalingKeys });
+    if (keys > frames)
+    {
+      frames = keys;
+      longest = channel;
+    }
+  }
+  const std::vector<Node> nodes = skeletonNodes(scene->mRootNode, channels);
+  if (nodes.empty() || frames == 0)
+  {
+    vtkErrorMacro(<< file << ": the animation's channels name no node of the file.");
+    return false;
+  }
+  if (nodes.size() > kMaxJoints || static_cast<std::size_t>(frames) * nodes.size() > kMaxTransforms)
+  {
+    vtkErrorMacro(<< file << ": " << frames << " frames of " << nodes.size()
+                  << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
+    return false;
+  }
+  // Frame times: the key times of the channel with the most keys, in seconds.
+  const double ticksPerSecond = animation.mTicksPerSecond > 0.0 ? animation.mTicksPerSecond : 25.0;
+  std::vector<double> ticks(frames);
+  for (unsigned f = 0; f < frames; ++f)
+  {
+    const double t = longest->mNumRotationKeys == frames ? longest->mRotationKeys[f].mTime
+      : longest->mNumPositionKeys == frames              ? longest->mPositionKeys[f].mTime
+                                                         : longest->mScalingKeys[f].mTime;
+    ticks[f] = t;
+  }
+  for (unsigned f = 1; f < frames; ++f)
+  {
+    if (!(ticks[f] > ticks[f - 1]) || !std::isfinite(ticks[f]))
+    {
+      vtkErrorMacro(<< file << ": the key times are not increasing at key " << f << ".");
+      return false;
+    }
+  }
+  lct::SkeletalAnimation& a = in.Animation;
+  a.frames = static_cast<int>(frames);
+  a.frameTime = frames > 1 ? (ticks.back() - ticks.front()) / (frames - 1) / ticksPerSecond
+                           : 1.0 / ticksPerSecond;
+  for (const Node& n : nodes)
+  {
+    const bool animated = channels.count(n.node->mName.C_Str()) > 0;
+    a.joints.push_back({ n.node->mName.C_Str(), n.parent, !animated && n.node->mNumChildren == 0 });
+  }
+  a.locals.resize(static_cast<std::size_t>(frames) * nodes.size());
+  for (std::size_t j = 0; j < nodes.size(); ++j)
+  {
+    const Eigen::Matrix4d rest = toEigen(nodes[j].node->mTransformation);
+    const auto found = channels.find(nodes[j].node->mName.C_Str());
+    const aiNodeAnim* channel = found == channels.end() ? nullptr : found->second;
+    // The rest transform's parts stand in for a channel's missing keys.
+    const Eigen::Vector3d restTranslation = rest.topRightCorner<3, 1>();
+    const Eigen::Matrix3d restLinear = rest.topLeftCorner<3, 3>();
+    const Eigen::Vector3d restScale = restLinear.colwise().norm();
+    const Eigen::Quaterniond restRotation(
+      Eigen::Matrix3d(restLinear * restScale.cwiseInverse().asDiagonal()));
+    for (unsigned f = 0; f < frames; ++f)
+    {
+      Eigen::Matrix4d& local = a.locals[static_cast<std::size_t>(f) * nodes.size() + j];
+      if (!channel)
+      {
+        local = rest;
+      }
+      else
+      {
+        const double t = ticks[f];
+        const Eigen::Vector3d position =
+          sampleVector(channel->mPositionKeys, channel->mNumPositionKeys, t, restTranslation);
+        const Eigen::Vector3d scale =
+          sampleVector(channel->mScalingKeys, channel->mNumScalingKeys, t, restScale);
+        const Eigen::Quaterniond rotation =
+          sampleRotation(channel->mRotationKeys, channel->mNumRotationKeys, t, restRotation);
+        local.setIdentity();
+        local.topLeftCorner<3, 3>() = rotation.normalized().toRotationMatrix() * scale.asDiagonal();
+        local.topRightCorner<3, 1>() = position;
+      }
+      if (!local.allFinite())
+      {
+        vtkErrorMacro(<< file << ": joint " << a.joints[j].name
+                      << " has a non-finite value at frame " << f << ".");
+        in = Internals();
+        return false;
+      }
+    }
+  }
+  in.StartTime = ticks.front() / ticksPerSecond;
+  in.Times.resize(frames);
+  for (unsigned f = 0; f < frames; ++f)
+  {
+    in.Times[f] = ticks[f] / ticksPerSecond;
+  }
+  in.Loaded = true;
+  in.LoadedFile = file;
+  in.LoadedMTime = this->GetMTime();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  if (!this->Load())
+  {
+    return 0;
+  }
+  const std::vector<double>& times = this->Internal->Times;
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  info->Set(
+    vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { times.front(), times.back() };
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  if (!this->Load())
+  {
+    return 0;
+  }
+  const Internals& in = *this->Internal;
+  const lct::SkeletalAnimation& a = in.Animation;
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(info);
+  int frame = 0;
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    if (std::isfinite(t))
+    {
+      const auto after = std::lower_bound(in.Times.begin(), in.Times.end(), t);
+      frame = static_cast<int>(after - in.Times.begin());
+      if (frame >= a.frames || (frame > 0 && t - in.Times[frame - 1] < in.Times[frame] - t))
+      {
+        frame = std::max(0, frame - 1);
+      }
+    }
+  }
+  std::vector<Eigen::Matrix4d> world;
+  lct::worldTransforms(a, frame, world);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(a.jointCount());
+  vtkNew<vtkCellArray> bones;
+  vtkNew<vtkStringArray> names;
+  names->SetName("JointName");
+  vtkNew<vtkIntArray> ids, parents, depths;
+  ids->SetName("JointId");
+  parents->SetName("Parent");
+  depths->SetName("Depth");
+  for (int j = 0; j < a.jointCount(); ++j)
+  {
+    const Eigen::Vector3d p = world[static_cast<std::size_t>(j)].topRightCorner<3, 1>();
+    points->SetPoint(j, p.data());
+    const int parent = a.joints[static_cast<std::size_t>(j)].parent;
+    if (parent >= 0)
+    {
+      const vtkIdType line[2] = { parent, j };
+      bones->InsertNextCell(2, line);
+    }
+    names->InsertNextValue(a.joints[static_cast<std::size_t>(j)].name);
+    ids->InsertNextValue(j);
+    parents->InsertNextValue(parent);
+    depths->InsertNextValue(a.depth(j));
+  }
+  output->SetPoints(points);
+  output->SetLines(bones);
+  output->GetPointData()->AddArray(names);
+  output->GetPointData()->AddArray(ids);
+  output->GetPointData()->AddArray(parents);
+  output->GetPointData()->AddArray(depths);
+  vtkNew<vtkIntArray> frameArray;
+  frameArray->SetName("Frame");
+  frameArray->InsertNextValue(frame);
+  output->GetFieldData()->AddArray(frameArray);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[frame]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSkeletonAnimationReader::Valid(int joint, int frame, const char* caller)
+{
+  const Internals& in = *this->Internal;
+  if (!in.Loaded)
+  {
+    vtkErrorMacro(<< caller << ": no animation read (UpdateInformation() first).");
+    return false;
+  }
+  if (joint < 0 || joint >= in.Animation.jointCount() || frame < 0 || frame >= in.Animation.frames)
+  {
+    vtkErrorMacro(<< caller << ": joint " << joint << ", frame " << frame << " is outside the "
+                  << in.Animation.jointCount() << " joints x " << in.Animation.frames
+                  << " frames.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::GetNumberOfJoints()
+{
+  return this->Internal->Loaded ? this->Internal->Animation.jointCount() : 0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSkeletonAnimationReader::GetJointName(int joint)
+{
+  return this->Valid(joint, 0, "GetJointName")
+    ? this->Internal->Animation.joints[static_cast<std::size_t>(joint)].name.c_str()
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::GetJointParent(int joint)
+{
+  return this->Valid(joint, 0, "GetJointParent")
+    ? this->Internal->Animation.joints[static_cast<std::size_t>(joint)].parent
+    : -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::IsEndSite(int joint)
+{
+  return this->Valid(joint, 0, "IsEndSite") &&
+    this->Internal->Animation.joints[static_cast<std::size_t>(joint)].endSite;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::GetNumberOfFrames()
+{
+  return this->Internal->Loaded ? this->Internal->Animation.frames : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkSkeletonAnimationReader::GetFrameTime()
+{
+  return this->Internal->Loaded ? this->Internal->Animation.frameTime : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::GetLocalTransform(int joint, int frame, vtkMatrix4x4* result)
+{
+  if (!result)
+  {
+    vtkErrorMacro(<< "GetLocalTransform: null result matrix.");
+    return 0;
+  }
+  if (!this->Valid(joint, frame, "GetLocalTransform"))
+  {
+    return 0;
+  }
+  const RowMajor4 rows = this->Internal->Animation.local(frame, joint);
+  result->DeepCopy(rows.data());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::GetWorldTransform(int joint, int frame, vtkMatrix4x4* result)
+{
+  if (!result)
+  {
+    vtkErrorMacro(<< "GetWorldTransform: null result matrix.");
+    return 0;
+  }
+  if (!this->Valid(joint, frame, "GetWorldTransform"))
+  {
+    return 0;
+  }
+  const lct::SkeletalAnimation& a = this->Internal->Animation;
+  Eigen::Matrix4d world = a.local(frame, joint);
+  for (int p = a.joints[static_cast<std::size_t>(joint)].parent; p >= 0;
+       p = a.joints[static_cast<std::size_t>(p)].parent)
+  {
+    world = a.local(frame, p) * world;
+  }
+  const RowMajor4 rows = world;
+  result->DeepCopy(rows.data());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+const lct::SkeletalAnimation* vtkSkeletonAnimationReader::GetAnimation()
+{
+  return this->Internal->Loaded ? &this->Internal->Animation : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkSkeletonAnimationReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Joints: " << this->GetNumberOfJoints() << "\n";
+  os << indent << "Frames: " << this->GetNumberOfFrames() << "\n";
+  os << indent << "FrameTime: " << this->GetFrameTime() << "\n";
+}

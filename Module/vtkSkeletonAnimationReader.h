@@ -1,0 +1,114 @@
+/**
+ * @class   vtkSkeletonAnimationReader
+ * @brief   reads a skeletal animation (BVH, and the animated formats assimp reads: FBX, glTF,
+ *          Collada, X, ...) as a time-aware poly data source and as per-joint transforms
+ *
+ * The file is read with assimp (libassimp, Debian's 5.2.5). The skeleton is every node of the
+ * file's first animation that has an animation channel, its descendants (end sites: nodes
+ * without children and without channels) and, for each tree of animated nodes, nothing above
+ * its top-most one. Each joint's local transform at each frame is T(position) R(rotation)
+ * S(scale) from its channel's keys, sampled at the frame times (linear for position and scale,
+ * slerp for rotation, between keys; a single key is constant), or the node's own transform for
+ * joints without a channel (end sites, fixed helper nodes). Frames are the key times of the
+ * channel with the most keys, assumed evenly spaced; for BVH they are the file's data rows, at
+ * its Frame Time.
+ *
+ * Output (vtkPolyDataAlgorithm, one frame per request): the joints' world positions as points
+ * (end sites included), bones as lines (parent to child), point data "JointName"
+ * (vtkStringArray), "JointId", "Parent" and "Depth" (vtkIntArray), field data "Frame". The
+ * frame times are advertised as TIME_STEPS (and TIME_RANGE), so VTK's animation machinery and
+ * ParaView-style scripts step through them; a requested time between frames gives the nearest
+ * frame, outside the range the first or last.
+ *
+ * For analysis and for the interpolators, after UpdateInformation() (or Update()):
+ * GetNumberOfJoints, GetJointName, GetJointParent, IsEndSite, GetNumberOfFrames, GetFrameTime,
+ * GetLocalTransform(joint, frame) and GetWorldTransform(joint, frame).
+ *
+ * Known limits of assimp 5.2: values are parsed as float32, and a BVH file's Euler channel
+ * order survives only inside the rotation quaternions. Unreadable, empty or malformed files, a
+ * file without animation, non-finite values, and more than 10000 joints or 3 10^7 transforms
+ * (frames x joints) are reported with a vtkErrorMacro; the request fails and no output is
+ * produced.
+ *
+ * @sa vtkTransformSequencePCA vtkTransformInterpolatorLCT
+ */
+#ifndef vtkSkeletonAnimationReader_h
+#define vtkSkeletonAnimationReader_h
+
+#include "vtkLCTModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // For the file name
+
+class vtkMatrix4x4;
+
+namespace lct
+{
+struct SkeletalAnimation;
+}
+
+class VTKLCT_EXPORT vtkSkeletonAnimationReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSkeletonAnimationReader* New();
+  vtkTypeMacro(vtkSkeletonAnimationReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to read.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The skeleton and its motion, valid after UpdateInformation() succeeded (0 or null, with an
+   * error, before; and for indices out of range).
+   */
+  int GetNumberOfJoints();
+  const char* GetJointName(int joint);
+  int GetJointParent(int joint);
+  int IsEndSite(int joint);
+  int GetNumberOfFrames();
+  double GetFrameTime();
+  ///@}
+
+  ///@{
+  /**
+   * The local transform of a joint at a frame (into its parent's frame), or its world
+   * transform (root to joint). Return 0 with an error (result untouched) for indices out of
+   * range or before the file was read.
+   */
+  int GetLocalTransform(int joint, int frame, vtkMatrix4x4* result);
+  int GetWorldTransform(int joint, int frame, vtkMatrix4x4* result);
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * The whole animation (null before the file was read): for C++ analysis code.
+   */
+  const lct::SkeletalAnimation* GetAnimation();
+#endif
+
+protected:
+  vtkSkeletonAnimationReader();
+  ~vtkSkeletonAnimationReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkSkeletonAnimationReader(const vtkSkeletonAnimationReader&) = delete;
+  void operator=(const vtkSkeletonAnimationReader&) = delete;
+
+  bool Load();
+  bool Valid(int joint, int frame, const char* caller);
+
+  char* FileName = nullptr;
+  struct Internals;
+  Internals* Internal;
+};
+
+#endif

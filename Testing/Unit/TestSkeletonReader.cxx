@@ -1,0 +1,217 @@
+// vtkSkeletonAnimationReader on the CMU and boxing BVH files of assimp-testmodels: the forward
+// kinematics of what it reads against a direct evaluation of the BVH text (Testing/Benchmarks/
+// BVH.h, an independent parser), TIME_STEPS through the pipeline, and unreadable files.
+#include "../Benchmarks/BVH.h"
+#include "VtkTestHelpers.h"
+
+#include "lct/Skeleton.h"
+#include "vtkSkeletonAnimationReader.h"
+
+#include "vtkCommand.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace
+{
+const std::string kData = "/usr/share/assimp/models/BVH/";
+
+bool haveData()
+{
+  return std::filesystem::exists(kData + "01_01.bvh");
+}
+
+struct Watched
+{
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  vtkNew<lct_test::ErrorCounter> errors;
+  vtkNew<lct_test::ErrorCounter> pipeline; // the executive reports the failed request too
+  Watched()
+  {
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipeline);
+  }
+};
+
+std::string temporaryFile(const std::string& name, const std::string& contents)
+{
+  const std::string path =
+    (std::filesystem::temp_directory_path() / ("lct-reader-" + name)).string();
+  std::ofstream(path, std::ios::binary) << contents;
+  return path;
+}
+} // namespace
+
+class SkeletonReaderOnClips : public ::testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(SkeletonReaderOnClips, ForwardKinematicsMatchesADirectEvaluationOfTheFile)
+{
+  if (!haveData())
+  {
+    GTEST_SKIP() << "assimp-testmodels not installed";
+  }
+  const std::string path = kData + GetParam();
+  const auto direct = lct_bench::LoadBVH(path);
+  ASSERT_TRUE(direct.Ok()) << direct.error;
+  const lct_bench::BVHMotion& m = direct.motion;
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  ASSERT_EQ(w.errors->Count, 0) << w.errors->Last;
+  const lct::SkeletalAnimation* a = w.reader->GetAnimation();
+  ASSERT_NE(a, nullptr);
+  ASSERT_EQ(a->jointCount(), static_cast<int>(m.joints.size()));
+  // Every data row (Boxing_Toes has one more than its Frames line says, which BVH.h skips).
+  EXPECT_GE(a->frames, m.frameCount);
+  EXPECT_LE(a->frames, m.frameCount + 1);
+  EXPECT_NEAR(a->frameTime, m.frameTime, 1e-7 * m.frameTime);
+  for (int j = 0; j < a->jointCount(); ++j)
+  {
+    EXPECT_EQ(a->joints[j].parent, m.joints[j].parent) << j;
+    EXPECT_EQ(a->joints[j].endSite, m.joints[j].endSite) << j;
+    if (!m.joints[j].endSite)
+    {
+      EXPECT_EQ(a->joints[j].name, m.joints[j].name);
+    }
+  }
+  // World positions of every joint and End Site at every row, against the text's own FK.
+  double height = 0.0, worst = 0.0;
+  std::vector<Eigen::Matrix4d> world;
+  std::vector<lct_bench::Matrix4> locals(m.joints.size()), directWorld;
+  std::vector<double> positions;
+  for (int f = 0; f < m.frameCount; ++f)
+  {
+    for (std::size_t j = 0; j < m.joints.size(); ++j)
+    {
+      locals[j] = lct_bench::LocalTransform(m, static_cast<int>(j), m.Frame(f));
+    }
+    lct_bench::ForwardKinematics(m, locals, directWorld, positions);
+    lct::worldTransforms(*a, f, world);
+    double low = 1e300, high = -1e300;
+    for (std::size_t j = 0; j < m.joints.size(); ++j)
+    {
+      const Eigen::Vector3d expected(positions[3 * j], positions[3 * j + 1], positions[3 * j + 2]);
+      worst = std::max(worst, (world[j].topRightCorner<3, 1>() - expected).norm());
+      low = std::min(low, expected.y());
+      high = std::max(high, expected.y());
+    }
+    height = std::max(height, high - low);
+  }
+  // assimp parses float32 values: ~1e-7 relative, accumulated along chains of up to ~10 bones.
+  EXPECT_LE(worst, 1e-5 * height) << GetParam() << ": worst " << worst << ", height " << height;
+  RecordProperty("WorstPositionErrorOverHeight", std::to_string(worst / height));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  CMU, SkeletonReaderOnClips, ::testing::Values("01_01.bvh", "01_03.bvh", "Boxing_Toes.bvh"));
+
+TEST(SkeletonReader, TimeStepsDrivePipelineUpdates)
+{
+  if (!haveData())
+  {
+    GTEST_SKIP() << "assimp-testmodels not installed";
+  }
+  Watched w;
+  w.reader->SetFileName((kData + "01_01.bvh").c_str());
+  w.reader->UpdateInformation();
+  vtkInformation* info = w.reader->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  EXPECT_EQ(n, w.reader->GetNumberOfFrames());
+  const double* times = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  EXPECT_NEAR(times[1] - times[0], w.reader->GetFrameTime(), 1e-12);
+  // Between frames 100 and 101, nearer 101.
+  const double t = times[100] + 0.7 * (times[101] - times[100]);
+  w.reader->UpdateTimeStep(t);
+  vtkPolyData* skeleton = w.reader->GetOutput();
+  ASSERT_EQ(skeleton->GetNumberOfPoints(), w.reader->GetNumberOfJoints());
+  EXPECT_EQ(skeleton->GetNumberOfLines(), w.reader->GetNumberOfJoints() - 1); // one root
+  auto* frame = vtkIntArray::SafeDownCast(skeleton->GetFieldData()->GetArray("Frame"));
+  ASSERT_NE(frame, nullptr);
+  EXPECT_EQ(frame->GetValue(0), 101);
+  auto* names =
+    vtkStringArray::SafeDownCast(skeleton->GetPointData()->GetAbstractArray("JointName"));
+  ASSERT_NE(names, nullptr);
+  EXPECT_EQ(names->GetValue(0), "Hips");
+  ASSERT_NE(skeleton->GetPointData()->GetArray("Depth"), nullptr);
+  ASSERT_NE(skeleton->GetPointData()->GetArray("Parent"), nullptr);
+  // The points are the world positions of that frame.
+  vtkNew<vtkMatrix4x4> world;
+  const int joint = w.reader->GetNumberOfJoints() - 1;
+  ASSERT_EQ(w.reader->GetWorldTransform(joint, 101, world), 1);
+  double p[3];
+  skeleton->GetPoint(joint, p);
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_NEAR(p[i], world->GetElement(i, 3), 1e-12);
+  }
+  // Beyond the range: the last frame.
+  w.reader->UpdateTimeStep(1e9);
+  frame = vtkIntArray::SafeDownCast(w.reader->GetOutput()->GetFieldData()->GetArray("Frame"));
+  EXPECT_EQ(frame->GetValue(0), w.reader->GetNumberOfFrames() - 1);
+  vtkNew<vtkMatrix4x4> local;
+  EXPECT_EQ(w.reader->GetLocalTransform(0, 0, local), 1);
+  EXPECT_EQ(w.errors->Count, 0);
+  EXPECT_EQ(w.reader->GetLocalTransform(0, w.reader->GetNumberOfFrames(), local), 0);
+  EXPECT_EQ(w.reader->GetLocalTransform(-1, 0, local), 0);
+  EXPECT_EQ(w.reader->GetJointName(9999), nullptr);
+  EXPECT_EQ(w.errors->Count, 3);
+}
+
+TEST(SkeletonReader, UnreadableFilesAreErrorsWithoutOutput)
+{
+  const std::string header = "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition "
+                             "Yposition Zposition Zrotation Yrotation Xrotation\n End Site\n {\n "
+                             "OFFSET 0 1 0\n }\n}\nMOTION\nFrames: 2\nFrame Time: 0.1\n";
+  const std::string files[] = {
+    "/nonexistent/file.bvh",
+    temporaryFile("empty.bvh", ""),
+    temporaryFile("garbage.bvh", "this is not a motion file \x01\x02\x03"),
+    temporaryFile("truncated.bvh", header + "0 0 0 0 0 0\n"),
+    temporaryFile("words.bvh", header + "0 0 0 0 0 0\n0 0 zero 0 0 0\n"),
+    temporaryFile("unbalanced.bvh", "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n"),
+  };
+  for (const std::string& file : files)
+  {
+    Watched w;
+    w.reader->SetFileName(file.c_str());
+    w.reader->Update();
+    EXPECT_EQ(w.errors->Count, 1) << file;
+    EXPECT_NE(w.errors->Last.find(file), std::string::npos) << w.errors->Last;
+    EXPECT_EQ(w.reader->GetOutput()->GetNumberOfPoints(), 0) << file;
+    EXPECT_EQ(w.reader->GetNumberOfJoints(), 0) << file;
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr) << file;
+  }
+  // No file name at all.
+  Watched w;
+  w.reader->Update();
+  EXPECT_EQ(w.errors->Count, 1);
+  EXPECT_NE(w.errors->Last.find("no file name"), std::string::npos) << w.errors->Last;
+  // A mesh file without animation.
+  const std::string mesh = "/usr/share/assimp/models/PLY/cube.ply";
+  if (std::filesystem::exists(mesh))
+  {
+    Watched m;
+    m.reader->SetFileName(mesh.c_str());
+    m.reader->Update();
+    EXPECT_EQ(m.errors->Count, 1);
+    EXPECT_NE(m.errors->Last.find("no skeletal animation"), std::string::npos) << m.errors->Last;
+    EXPECT_EQ(m.reader->GetNumberOfJoints(), 0);
+  }
+}
