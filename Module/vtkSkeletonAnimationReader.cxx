@@ -1,5 +1,6 @@
 #include "vtkSkeletonAnimationReader.h"
 
+#include "lct/BVHWriter.h"
 #include "lct/Skeleton.h"
 
 #include "vtkCellArray.h"
@@ -22,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <vector>
 
@@ -490,6 +493,45 @@ int vtkSkeletonAnimationReader::GetWorldTransform(int joint, int frame, vtkMatri
   }
   const RowMajor4 rows = world;
   result->DeepCopy(rows.data());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSkeletonAnimationReader::WriteBVH(const char* fileName, const char* rotationOrder)
+{
+  if (!fileName || !*fileName || !rotationOrder)
+  {
+    vtkErrorMacro(<< "WriteBVH: " << (rotationOrder ? "no file name" : "no rotation order")
+                  << "; nothing written.");
+    return 0;
+  }
+  if (!this->Internal->Loaded)
+  {
+    vtkErrorMacro(<< "WriteBVH: no animation read (UpdateInformation() first); nothing written.");
+    return 0;
+  }
+  const std::string target = fileName;
+  const std::string temporary = target + ".part";
+  std::string why;
+  bool written = false;
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    written = out && lct::writeBVH(this->Internal->Animation, rotationOrder, out, &why);
+    out.close();
+    written = written && !out.fail();
+    if (why.empty() && !written)
+    {
+      why = "cannot write " + temporary;
+    }
+  }
+  if (!written || std::rename(temporary.c_str(), target.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    vtkErrorMacro(<< "WriteBVH: " << target << ": "
+                  << (written ? "cannot rename the temporary file into place" : why)
+                  << "; nothing written.");
+    return 0;
+  }
   return 1;
 }
 

@@ -85,6 +85,15 @@ public:
   int GetWorldTransform(int joint, int frame, vtkMatrix4x4* result);
   ///@}
 
+  /**
+   * Write the animation read as a BVH file (lct/BVHWriter.h): the same joint names, hierarchy,
+   * offsets and frame time, rotation channels in `rotationOrder` (a permutation of "XYZ", e.g.
+   * "ZYX"), position channels for the root and any joint that moves. Written to a temporary
+   * name and renamed, so a failure leaves no file. Returns 0 with an error before the file was
+   * read, for a bad order, for transforms with scale or shear, or when writing fails.
+   */
+  int WriteBVH(const char* fileName, const char* rotationOrder);
+
 #ifndef __VTK_WRAP__
   /**
    * The whole animation (null before the file was read): for C++ analysis code.

@@ -4,6 +4,7 @@
 #include "../Benchmarks/BVH.h"
 #include "VtkTestHelpers.h"
 
+#include "lct/BVHWriter.h"
 #include "lct/Skeleton.h"
 #include "vtkSkeletonAnimationReader.h"
 
@@ -24,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -213,5 +215,109 @@ TEST(SkeletonReader, UnreadableFilesAreErrorsWithoutOutput)
     EXPECT_EQ(m.errors->Count, 1);
     EXPECT_NE(m.errors->Last.find("no skeletal animation"), std::string::npos) << m.errors->Last;
     EXPECT_EQ(m.reader->GetNumberOfJoints(), 0);
+  }
+}
+
+// Read, write as BVH in another channel order, and read the written text with the independent
+// parser: the same hierarchy and the same joint positions at every row.
+TEST_P(SkeletonReaderOnClips, WrittenBVHReproducesTheMotion)
+{
+  if (!haveData())
+  {
+    GTEST_SKIP() << "assimp-testmodels not installed";
+  }
+  Watched w;
+  w.reader->SetFileName((kData + GetParam()).c_str());
+  w.reader->UpdateInformation();
+  const lct::SkeletalAnimation* a = w.reader->GetAnimation();
+  ASSERT_NE(a, nullptr);
+  for (const char* order : { "ZXY", "XYZ" })
+  {
+    const std::string out = (std::filesystem::temp_directory_path() /
+      (std::string("lct-written-") + order + "-" + GetParam()))
+                              .string();
+    ASSERT_EQ(w.reader->WriteBVH(out.c_str(), order), 1) << w.errors->Last;
+    EXPECT_FALSE(std::filesystem::exists(out + ".part"));
+    const auto written = lct_bench::LoadBVH(out);
+    ASSERT_TRUE(written.Ok()) << written.error;
+    const lct_bench::BVHMotion& m = written.motion;
+    ASSERT_EQ(static_cast<int>(m.joints.size()), a->jointCount());
+    ASSERT_EQ(m.frameCount, a->frames);
+    EXPECT_NEAR(m.frameTime, a->frameTime, 1e-9 * a->frameTime);
+    std::vector<Eigen::Matrix4d> world;
+    std::vector<lct_bench::Matrix4> locals(m.joints.size()), directWorld;
+    std::vector<double> positions;
+    double worst = 0.0, height = 0.0, jump = 0.0;
+    for (int f = 0; f < m.frameCount; ++f)
+    {
+      for (std::size_t j = 0; j < m.joints.size(); ++j)
+      {
+        EXPECT_EQ(m.joints[j].parent, a->joints[j].parent);
+        locals[j] = lct_bench::LocalTransform(m, static_cast<int>(j), m.Frame(f));
+      }
+      lct::worldTransforms(*a, f, world);
+      lct_bench::ForwardKinematics(m, locals, directWorld, positions);
+      for (std::size_t j = 0; j < m.joints.size(); ++j)
+      {
+        const Eigen::Vector3d p(positions[3 * j], positions[3 * j + 1], positions[3 * j + 2]);
+        worst = std::max(worst, (world[j].topRightCorner<3, 1>() - p).norm());
+        height = std::max(height, std::abs(p.y() - positions[1]));
+      }
+      // Continuous channels: no rotation value jumps by half a turn between rows.
+      if (f > 0)
+      {
+        for (int c = 0; c < m.channelCount; ++c)
+        {
+          jump = std::max(jump, std::abs(m.Frame(f)[c] - m.Frame(f - 1)[c]));
+        }
+      }
+    }
+    EXPECT_LE(worst, 1e-7 * height) << order;
+    EXPECT_LT(jump, 180.0) << order;
+    std::filesystem::remove(out);
+  }
+  EXPECT_EQ(w.errors->Count, 0);
+}
+
+TEST(SkeletonReader, WritingRefusesWhatBVHCannotHold)
+{
+  lct::SkeletalAnimation a;
+  a.joints = { { "root", -1, false }, { "tip", 0, true } };
+  a.frames = 1;
+  a.frameTime = 0.1;
+  a.locals = { Eigen::Matrix4d::Identity(), Eigen::Matrix4d::Identity() };
+  a.locals[1](1, 3) = 2.0;
+  std::ostringstream good;
+  std::string why;
+  ASSERT_TRUE(lct::writeBVH(a, "ZYX", good, &why)) << why;
+  EXPECT_NE(good.str().find("End Site"), std::string::npos);
+  EXPECT_NE(good.str().find("OFFSET 0 2 0"), std::string::npos) << good.str();
+  for (const char* order : { "ZZY", "XY", "ABC", "" })
+  {
+    std::ostringstream out;
+    EXPECT_FALSE(lct::writeBVH(a, order, out, &why)) << order;
+    EXPECT_NE(why.find("XYZ"), std::string::npos) << why;
+  }
+  a.locals[0](0, 0) = 2.0; // a scale
+  std::ostringstream scaled;
+  EXPECT_FALSE(lct::writeBVH(a, "ZYX", scaled, &why));
+  EXPECT_NE(why.find("no scale, shear or reflection"), std::string::npos) << why;
+  a.locals[0].setIdentity();
+  a.locals.pop_back(); // inconsistent
+  std::ostringstream inconsistent;
+  EXPECT_FALSE(lct::writeBVH(a, "ZYX", inconsistent, &why));
+
+  Watched w;
+  vtkNew<vtkMatrix4x4> m;
+  EXPECT_EQ(w.reader->WriteBVH("/tmp/never.bvh", "ZYX"), 0); // nothing read
+  if (haveData())
+  {
+    w.reader->SetFileName((kData + "01_01.bvh").c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.reader->WriteBVH("/nonexistent/dir/out.bvh", "ZYX"), 0);
+    EXPECT_NE(w.errors->Last.find("nothing written"), std::string::npos) << w.errors->Last;
+    EXPECT_EQ(w.reader->WriteBVH("/tmp/lct-bad-order.bvh", "ZYZ"), 0);
+    EXPECT_FALSE(std::filesystem::exists("/tmp/lct-bad-order.bvh"));
+    EXPECT_FALSE(std::filesystem::exists("/tmp/lct-bad-order.bvh.part"));
   }
 }
