@@ -54,7 +54,8 @@ vtkLogTransform::~vtkLogTransform()
 //------------------------------------------------------------------------------
 // The only place the state changes: the coordinates are committed with their matrix, and only
 // when that matrix is finite.
-bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, const char* caller)
+bool vtkLogTransform::Commit(
+  const double* coordinates, int parametrisation, const char* caller, bool inverseHeld)
 {
   const lct::LogCoords c = Eigen::Map<const lct::LogCoords>(coordinates);
   const auto matrix = lct::exponential(c, toCore(parametrisation));
@@ -68,8 +69,9 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
   // its smallest stretch 1 / sigma_max normal, which ||A||_F < 1 / DBL_MIN guarantees.
   const Eigen::Matrix3d linear = matrix.value.topLeftCorner<3, 3>();
   const double largest = linear.cwiseAbs().maxCoeff();
-  const bool invertible = lct::inverseAffine(matrix.value).allFinite() &&
-    largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min();
+  const bool invertible = inverseHeld ||
+    (lct::inverseAffine(matrix.value).allFinite() &&
+      largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min());
   if (!invertible)
   {
     vtkErrorMacro(<< caller << ": the inverse of the resulting transform overflows double "
@@ -361,7 +363,7 @@ void vtkLogTransform::Inverse()
   {
     // The principal log of M^-1 is -log M.
     const lct::LogCoords negated = -s.Coordinates;
-    this->Commit(negated.data(), this->Parametrisation, "Inverse");
+    this->Commit(negated.data(), this->Parametrisation, "Inverse", true);
     return;
   }
   // Polar: psi(M^-1) != -psi(M) unless the factors commute, but it has a closed form that keeps
@@ -372,7 +374,7 @@ void vtkLogTransform::Inverse()
     vtkErrorMacro(<< "Inverse: " << lct::describe(c.status) << "; unchanged.");
     return;
   }
-  this->Commit(c.value.data(), this->Parametrisation, "Inverse");
+  this->Commit(c.value.data(), this->Parametrisation, "Inverse", true);
 }
 
 //------------------------------------------------------------------------------

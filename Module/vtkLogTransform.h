@@ -172,7 +172,11 @@ private:
   void operator=(const vtkLogTransform&) = delete;
 
   int SetMatrixNear(const double elements[16], const double* referenceCoordinates);
-  bool Commit(const double* coordinates, int parametrisation, const char* caller);
+  /// `inverseHeld`: the inverse of the new state is the current one (Inverse()), finite by
+  /// construction, so it is not recomputed from the new matrix (whose own round-off, amplified
+  /// by the condition number, could overflow there).
+  bool Commit(
+    const double* coordinates, int parametrisation, const char* caller, bool inverseHeld = false);
 
   struct State;
   State* Internal;

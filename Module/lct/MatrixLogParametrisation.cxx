@@ -174,7 +174,11 @@ BlockFunction blockFunction(
     }
   }
   out.linear = q * fT * q.transpose();
-  out.translation = q * (gT * (q.transpose() * t));
+  // g(T) (Q^T t) at the unit size of t: for t near DBL_MAX the products overflow before they
+  // cancel (exp of -log M, the inverse of a map whose inverse vtkLogTransform checked finite).
+  const int k = unitScaleExponent(t);
+  const Eigen::Vector3d unitT = scaledByPowerOfTwo(t, -k);
+  out.translation = scaledByPowerOfTwo(Eigen::Vector3d(q * (gT * (q.transpose() * unitT))), k);
   if (!out.linear.allFinite() || !out.translation.allFinite())
   {
     out.status = Status::OutOfRange;

@@ -430,3 +430,32 @@ TEST(FuzzFindings, D25InverseOfAStateWithATranslationNearDblMax)
   EXPECT_EQ(errors->Count, 0) << errors->Last;
   EXPECT_NEAR(t->GetMatrix()->GetElement(1, 3), -1e308, 1e294);
 }
+
+TEST(FuzzFindings, D28MatrixLogInverseOfAnIllConditionedStateWithAHugeTranslation)
+{
+  // A MatrixLog state of condition ~1e12 with translation ~1e304: its inverse exp(-c) is
+  // representable, but the inverse of that, recomputed from its rounded matrix, overflowed, so
+  // Inverse() and GetInverse() refused (GetInverse silently held the forward matrix). The inverse
+  // of the inverse is the current state: Inverse() no longer recomputes it. exp(-c) itself also
+  // overflowed in g(T) (Q^T u) before the products cancelled.
+  const double c[12] = { 1.0619472435068445e+305, -1.0619472101725061e+305, 1.0619472252479826e+305,
+    46.001245459637104, 43.946666481182774, -4.7979183238333292, -17.050276034799111,
+    -23.689808041657486, 69.014164030556628, 38.967879960269144, -4.0643400724087577,
+    9.0752236918192892 };
+  vtkNew<vtkLogTransform> t;
+  t->SetParametrisationToMatrixLog();
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(t->SetLogCoordinates(c), 1) << errors->Last;
+  vtkNew<vtkMatrix4x4> forward;
+  forward->DeepCopy(t->GetMatrix());
+  t->Inverse();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  EXPECT_TRUE(allFinite(t->GetMatrix()));
+  t->Inverse();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  for (int i = 0; i < 16; ++i)
+  {
+    EXPECT_EQ(t->GetMatrix()->GetElement(i / 4, i % 4), forward->GetElement(i / 4, i % 4));
+  }
+}
