@@ -42,6 +42,19 @@ bool allFinite(const LogCoords& c)
   return c.allFinite();
 }
 
+/// The Euclidean norm without overflow or underflow: scaled by the largest entry (Eigen's
+/// stableNorm does the same in blocks, at several times the cost for 12 or 18 entries).
+template <typename Derived>
+double scaledNorm(const Eigen::MatrixBase<Derived>& v)
+{
+  const double largest = v.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0) || !std::isfinite(largest))
+  {
+    return largest;
+  }
+  return largest * (v / largest).norm();
+}
+
 /// W d with d = c - origin; fails when the difference overflows.
 Result<LogVector> weightedOffset(const LogBasis& basis, const LogCoords& c)
 {
@@ -61,11 +74,10 @@ Result<LogVector> weightedOffset(const LogBasis& basis, const LogCoords& c)
 Result<BasisFactors> factor(const LogBasis& basis, const LogVector& weighted)
 {
   BasisFactors f;
-  const BasisCoefficients along = basis.range.transpose() * weighted;
-  const LogVector inSpan = basis.range * along;
-  f.residual = (weighted - inSpan).stableNorm();
+  const LogVector inSpan = basis.range * (basis.range.transpose() * weighted);
+  f.residual = scaledNorm(weighted - inSpan);
   f.projection = basis.origin + inSpan.cwiseQuotient(metricRoot());
-  f.coefficients = basis.solver * weighted;
+  f.coefficients = (basis.solver * weighted).head(basis.size());
   if (!f.coefficients.allFinite() || !f.projection.allFinite() || !std::isfinite(f.residual))
   {
     return Result<BasisFactors>::failure(Status::OutOfRange);
@@ -104,7 +116,7 @@ double logNorm(const LogCoords& a) noexcept
   // counted twice.
   Eigen::Matrix<double, 18, 1> twice;
   twice << a, rotationPart(a), a.segment<3>(9);
-  return twice.stableNorm();
+  return scaledNorm(twice);
 }
 
 Result<LogBasis> analyseBasis(
@@ -142,11 +154,11 @@ Result<LogBasis> analyseBasis(
   basis.singularValues = scaledByPowerOfTwo(sigma, e);
   basis.conditionNumber = rank == k ? (sigma[0] / sigma[k - 1]) * (sigma[0] / sigma[k - 1])
                                     : std::numeric_limits<double>::infinity();
-  basis.range = svd.matrixU().leftCols(rank);
+  basis.range.leftCols(rank) = svd.matrixU().leftCols(rank);
   // The solver in the input's units: 1 / (sigma scale) may overflow for bases near the bottom
   // of the double range, which is refused rather than handed on.
   const BasisCoefficients inverse = scaledByPowerOfTwo(sigma.head(rank), e).cwiseInverse();
-  basis.solver =
+  basis.solver.topRows(k) =
     svd.matrixV().leftCols(rank) * inverse.asDiagonal() * svd.matrixU().leftCols(rank).transpose();
   if (!basis.singularValues.allFinite() || !basis.solver.allFinite())
   {

@@ -93,11 +93,13 @@ struct LogBasis
   int size() const noexcept { return static_cast<int>(this->vectors.cols()); }
   bool fullRank() const noexcept { return this->rank == this->size(); }
 
-  /// P: the first `rank` left singular vectors of W vectors, an orthonormal basis of W span.
-  Eigen::Matrix<double, kLogDimension, Eigen::Dynamic, 0, kLogDimension, kLogDimension> range;
-  /// Q diag(1 / sigma) P^T over the first `rank` singular values: x = solver W (c - origin)
-  /// (the least-norm coefficients; the only ones when the basis has full rank).
-  Eigen::Matrix<double, Eigen::Dynamic, kLogDimension, 0, kLogDimension, kLogDimension> solver;
+  /// P: the first `rank` left singular vectors of W vectors, an orthonormal basis of W span,
+  /// padded with zero columns to 12 (fixed-size products are several times faster).
+  Eigen::Matrix<double, kLogDimension, kLogDimension> range = decltype(range)::Zero();
+  /// Q diag(1 / sigma) P^T over the first `rank` singular values, padded with zero rows to 12:
+  /// x = (solver W (c - origin)).head(size()) (the least-norm coefficients; the only ones when
+  /// the basis has full rank).
+  Eigen::Matrix<double, kLogDimension, kLogDimension> solver = decltype(solver)::Zero();
 };
 
 /// The analysed basis of `count` log vectors about `origin`. Fails with InvalidArgument (count
