@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkLogTransform);
@@ -37,6 +38,13 @@ struct vtkLogTransform::State
 {
   lct::LogCoords Coordinates = lct::LogCoords::Zero();
   Eigen::Matrix4d Matrix = Eigen::Matrix4d::Identity();
+  /// After Inverse(): the state it inverted, so that the next Inverse() restores it exactly
+  /// instead of recomputing an inverse from the rounded matrix of an inverse (which, for an
+  /// ill-conditioned map with a translation near DBL_MAX, overflows although the state it
+  /// came from is finite).
+  bool HasInverse = false;
+  lct::LogCoords InverseCoordinates;
+  Eigen::Matrix4d InverseMatrix;
 };
 
 //------------------------------------------------------------------------------
@@ -79,8 +87,15 @@ bool vtkLogTransform::Commit(
                   << "unchanged.");
     return false;
   }
-  this->Internal->Coordinates = c;
-  this->Internal->Matrix = matrix.value;
+  State& state = *this->Internal;
+  state.HasInverse = inverseHeld;
+  if (inverseHeld)
+  {
+    state.InverseCoordinates = state.Coordinates;
+    state.InverseMatrix = state.Matrix;
+  }
+  state.Coordinates = c;
+  state.Matrix = matrix.value;
   this->Modified();
   return true;
 }
@@ -352,6 +367,7 @@ void vtkLogTransform::Identity()
 {
   this->Internal->Coordinates.setZero();
   this->Internal->Matrix.setIdentity();
+  this->Internal->HasInverse = false;
   this->Modified();
 }
 
@@ -359,6 +375,13 @@ void vtkLogTransform::Identity()
 void vtkLogTransform::Inverse()
 {
   State& s = *this->Internal;
+  if (s.HasInverse)
+  {
+    std::swap(s.Coordinates, s.InverseCoordinates);
+    std::swap(s.Matrix, s.InverseMatrix);
+    this->Modified();
+    return;
+  }
   if (this->Parametrisation == MATRIX_LOG)
   {
     // The principal log of M^-1 is -log M.

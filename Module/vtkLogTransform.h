@@ -146,7 +146,8 @@ public:
 
   /**
    * Invert in place. Exact negation of the coordinates for MatrixLog; for Polar the
-   * coordinates of the inverse map are recomputed (with the rotation branch kept).
+   * coordinates of the inverse map are recomputed (with the rotation branch kept). Inverting
+   * twice restores the state exactly (the inverted state is remembered).
    */
   void Inverse() override;
 

@@ -459,3 +459,33 @@ TEST(FuzzFindings, D28MatrixLogInverseOfAnIllConditionedStateWithAHugeTranslatio
     EXPECT_EQ(t->GetMatrix()->GetElement(i / 4, i % 4), forward->GetElement(i / 4, i % 4));
   }
 }
+
+TEST(FuzzFindings, D29PolarInverseTwiceOfAnIllConditionedStateWithAHugeTranslation)
+{
+  // Polar, translation 1e304 under a stretch of condition ~1e12: Inverse() succeeded, but the
+  // second Inverse() recomputed the inverse of the inverse from its rounded matrix, which
+  // overflowed: "Inverse: the result is out of the range", though Inverse() always succeeds. The
+  // inverted state is remembered, so inverting twice restores the state exactly.
+  const double p = 9.4247779607693811;
+  const double c[12] = { 1.0359053541755143e+304, p, p, 0, 39.477756153424501, 0, p, p, p, p, p,
+    -p };
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(t->SetLogCoordinates(c), 1) << errors->Last;
+  t->Inverse();
+  t->Inverse();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  double back[12];
+  t->GetLogCoordinates(back);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(back[i], c[i]) << i;
+  }
+  // GetInverse() of the inverted state (DeepCopy + Inverse on a hidden object) likewise.
+  t->Inverse();
+  vtkLinearTransform* inverse = t->GetLinearInverse();
+  inverse->Update();
+  EXPECT_TRUE(allFinite(inverse->GetMatrix()));
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+}
