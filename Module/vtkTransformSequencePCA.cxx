@@ -311,13 +311,11 @@ int vtkTransformSequencePCA::GetExplainedVariance(vtkDoubleArray* fractions)
     return 0;
   }
   const lct::SequencePCA& pca = this->Internal->Pca;
-  const double total = pca.singularValues.squaredNorm();
   fractions->SetNumberOfComponents(1);
   fractions->SetNumberOfTuples(pca.size());
   for (int i = 0; i < pca.size(); ++i)
   {
-    const double s = pca.singularValues[i];
-    fractions->SetValue(i, total > 0.0 ? s * s / total : 0.0);
+    fractions->SetValue(i, pca.varianceShare(i));
   }
   return 1;
 }

@@ -143,7 +143,11 @@ Result<LogBasis> analyseBasis(
   // The SVD of W B scaled by a power of two, so that no square in it overflows or underflows.
   const int e = unitScaleExponent(basis.vectors);
   const BasisMatrix weighted = metricRoot().asDiagonal() * scaledByPowerOfTwo(basis.vectors, -e);
-  const Eigen::JacobiSVD<BasisMatrix> svd(weighted, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  // A dynamic matrix for the SVD: Eigen 3.4's QR preconditioner of JacobiSVD asserts on
+  // fixed-maximum-size matrices with more rows than columns (found by FuzzAnalysis; in Release,
+  // where the assertion is off, it wrote past the workspace).
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(
+    Eigen::MatrixXd(weighted), Eigen::ComputeThinU | Eigen::ComputeThinV);
   const BasisCoefficients sigma = svd.singularValues();
   int rank = 0;
   while (rank < k && sigma[rank] > 0.0 && sigma[rank] > rankTolerance * sigma[0])

@@ -11,16 +11,29 @@
 namespace lct
 {
 
+double SequencePCA::varianceShare(int component) const noexcept
+{
+  const Eigen::Index n = this->singularValues.size();
+  if (component < 0 || component >= n || !(this->singularValues[0] > 0.0))
+  {
+    return 0.0;
+  }
+  // In units of the largest singular value, so that no square overflows (sigma ~ 1e200).
+  const Eigen::VectorXd unit = this->singularValues / this->singularValues[0];
+  const double s = unit[component];
+  return s * s / unit.squaredNorm();
+}
+
 double SequencePCA::explainedFraction(int r) const noexcept
 {
   const Eigen::Index n = this->singularValues.size();
-  const double total = this->singularValues.squaredNorm();
-  if (n == 0 || !(total > 0.0))
+  if (n == 0 || !(this->singularValues[0] > 0.0))
   {
     return r > 0 ? 1.0 : 0.0;
   }
   const Eigen::Index k = std::clamp<Eigen::Index>(r, 0, n);
-  return this->singularValues.head(k).squaredNorm() / total;
+  const Eigen::VectorXd unit = this->singularValues / this->singularValues[0];
+  return unit.head(k).squaredNorm() / unit.squaredNorm();
 }
 
 Result<SequencePCA> sequencePCA(

@@ -58,6 +58,10 @@ struct SequencePCA
 
   /// The fraction of the total (weighted) variance that the first r components explain.
   double explainedFraction(int r) const noexcept;
+
+  /// The fraction of the total variance along one component (0 outside [0, size of
+  /// singularValues)).
+  double varianceShare(int component) const noexcept;
 };
 
 /// The PCA of `logs` (frame-major: logs[f * channels + c]), keeping at most maximumComponents

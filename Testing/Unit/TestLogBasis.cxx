@@ -414,3 +414,22 @@ TEST(LogBasis, BadInputIsRefused)
 }
 
 } // namespace
+
+// FuzzAnalysis A1: Eigen 3.4's JacobiSVD asserted (Debug) or wrote past its workspace (Release)
+// on the fixed-maximum-size 12 x k basis matrix; every k from 1 to 12 under the sanitizers.
+TEST(LogBasis, EveryBasisSizeAnalyses)
+{
+  lct_test::RandomTransforms random(19);
+  LogCoords v[12];
+  for (auto& c : v)
+  {
+    c = randomCoords(random);
+  }
+  for (std::size_t k = 1; k <= 12; ++k)
+  {
+    const auto basis = lct::analyseBasis(v, k);
+    ASSERT_TRUE(basis.ok()) << k;
+    EXPECT_EQ(basis.value.rank, static_cast<int>(k));
+    EXPECT_TRUE(basis.value.singularValues.allFinite());
+  }
+}

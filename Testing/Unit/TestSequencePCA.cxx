@@ -384,3 +384,26 @@ TEST(SequencePCA, BadInputIsRefused)
   const auto w2 = lct::sequencePCA(wide, 2, 1);
   EXPECT_TRUE(w2.ok() || w2.status == lct::Status::OutOfRange);
 }
+
+// FuzzAnalysis A2: singular values near 1e200 squared to Inf, and the explained fractions were
+// NaN. They are formed in units of the largest singular value.
+TEST(SequencePCA, ExplainedVarianceOfHugeMotionsIsFinite)
+{
+  RandomTransforms random(35);
+  std::vector<LogCoords> logs;
+  for (int f = 0; f < 10; ++f)
+  {
+    logs.push_back(1e200 * randomCoords(random, 1.0));
+  }
+  const auto pca = lct::sequencePCA(logs.data(), 10, 1);
+  ASSERT_TRUE(pca.ok());
+  double sum = 0.0;
+  for (int i = 0; i < pca.value.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(pca.value.varianceShare(i)));
+    sum += pca.value.varianceShare(i);
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+  EXPECT_NEAR(pca.value.explainedFraction(pca.value.size()), 1.0, 1e-12);
+  EXPECT_GT(pca.value.explainedFraction(1), 0.0);
+}
