@@ -30,6 +30,9 @@
  * (frames x joints) are reported with a vtkErrorMacro; the request fails and no output is
  * produced.
  *
+ * Thread safety: like any VTK algorithm, one reader must not be updated from two threads at
+ * once; the Get methods only read, and may run concurrently once an update has returned.
+ *
  * @sa vtkTransformSequencePCA vtkTransformInterpolatorLCT
  */
 #ifndef vtkSkeletonAnimationReader_h
