@@ -127,6 +127,12 @@ Result<LogCoords> reconstructLog(const SequencePCA& pca, int frame, int channel,
     return Result<LogCoords>::failure(Status::InvalidArgument);
   }
   const Eigen::Index r = std::clamp<Eigen::Index>(components, 0, pca.size());
+  if (r == 0)
+  {
+    // The mean alone (and no block of an empty component matrix, whose data pointer is null:
+    // FuzzAnalysis A3).
+    return { pca.means[static_cast<std::size_t>(channel)], Status::Ok };
+  }
   const LogCoords c = pca.means[static_cast<std::size_t>(channel)] +
     pca.components.block(12 * channel, 0, 12, r) * pca.scores.row(frame).head(r).transpose();
   if (!c.allFinite())

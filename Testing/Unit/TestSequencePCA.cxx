@@ -407,3 +407,22 @@ TEST(SequencePCA, ExplainedVarianceOfHugeMotionsIsFinite)
   EXPECT_NEAR(pca.value.explainedFraction(pca.value.size()), 1.0, 1e-12);
   EXPECT_GT(pca.value.explainedFraction(1), 0.0);
 }
+
+// FuzzAnalysis A3: constant data has no component; reconstructing from 0 components took a
+// block of the empty component matrix (a null data pointer plus an offset: UB). It is the mean.
+TEST(SequencePCA, ConstantDataHasNoComponentAndReconstructsToTheMean)
+{
+  RandomTransforms random(36);
+  const LogCoords c = randomCoords(random, 1.0);
+  const std::vector<LogCoords> logs(6, c);
+  const auto pca = lct::sequencePCA(logs.data(), 3, 2);
+  ASSERT_TRUE(pca.ok());
+  EXPECT_EQ(pca.value.size(), 0);
+  for (const int r : { 0, 1, 5 })
+  {
+    const auto back = lct::reconstructLog(pca.value, 2, 1, r);
+    ASSERT_TRUE(back.ok());
+    EXPECT_LE((back.value - c).norm(), 1e-15 * c.norm());
+  }
+  EXPECT_EQ(pca.value.explainedFraction(0), 0.0);
+}
