@@ -361,6 +361,13 @@ private:
                        << ") Inverse, coordinates " << Show(CoordinatesOf(t).transpose()));
     const int errors = this->ErrorCount();
     t->Inverse();
+    // KNOWN: D30, as in GetInverse below: Inverse() itself refuses (and leaves the state).
+    if (this->ErrorCount() != errors &&
+      lct_fuzz::Known("D30", m.topRightCorner<3, 1>().cwiseAbs().maxCoeff() > 1e300))
+    {
+      LCT_FUZZ_CHECK(MatrixOf(t) == m, "Inverse (D30) failed but changed the transform");
+      return;
+    }
     LCT_FUZZ_CHECK(this->ErrorCount() == errors,
       "Inverse reported an error: " << this->Errors.Last << "\n"
                                     << Show(m));
@@ -376,6 +383,17 @@ private:
     auto* inverse = vtkLinearTransform::SafeDownCast(t->GetInverse());
     LCT_FUZZ_CHECK(inverse, "GetInverse is not a vtkLinearTransform");
     const Eigen::Matrix4d mi = MatrixOf(inverse);
+    // KNOWN: D30 (Testing/Fuzz/README.md). A Polar state with an ill-conditioned linear part
+    // (cond ~1e8) and a translation near DBL_MAX (~6.5e304) is accepted, but the inverse VTK
+    // builds for GetInverse (a copy, then Inverse(): the Polar closed form and its exp)
+    // overflows, and GetInverse reports an error (its matrix is never wrong or non-finite,
+    // which CheckInverse below still checks). Skipped where the trigger holds.
+    if (this->ErrorCount() != errors &&
+      lct_fuzz::Known("D30", m.topRightCorner<3, 1>().cwiseAbs().maxCoeff() > 1e300))
+    {
+      LCT_FUZZ_CHECK(AllFinite(mi), "GetInverse (D30) is not finite:\n" << Show(mi));
+      return;
+    }
     LCT_FUZZ_CHECK(this->ErrorCount() == errors,
       "GetInverse reported an error: " << this->Errors.Last << "\n"
                                        << Show(m));
