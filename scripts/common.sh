@@ -11,7 +11,7 @@ LCT_REQUIRED_PACKAGES=(
   libvtk9-dev python3-vtk9 libeigen3-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
-  assimp-testmodels nlohmann-json3-dev libassimp-dev
+  assimp-testmodels nlohmann-json3-dev libassimp-dev liblzma-dev
 )
 
 # The clang toolchain of the sanitizer pass (scripts/test) and the fuzz targets (scripts/fuzz):

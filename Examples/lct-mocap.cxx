@@ -1,0 +1,446 @@
+// lct-mocap: error-bounded compression of skeletal animation in log coordinates.
+//
+//   lct-mocap compress IN --tolerance 1% -o OUT.lctm     any file vtkSkeletonAnimationReader reads
+//   lct-mocap decompress IN.lctm -o OUT.bvh              a BVH file other tools read
+//   lct-mocap info IN.lctm                               what a file holds
+//   lct-mocap analyse IN [-o DIR]                        error against size, per representation
+//
+// The method and the file format are in Module/lct/MotionCodec.h; the README's "Motion capture
+// compression" section has the measurements. Exit codes: 0 ok, 1 error, 2 usage.
+#include "MocapAnalysis.h"
+
+#include "vtkSkeletonAnimationReader.h"
+
+#include "lct/BVHWriter.h"
+#include "lct/MotionCodec.h"
+#include "lct/MotionError.h"
+
+#include <vtkNew.h>
+#include <vtkObject.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+const char* const Usage =
+  R"(usage: lct-mocap compress IN [--tolerance T] [--frames A:B] [--degree D] -o OUT.lctm
+       lct-mocap decompress IN.lctm [--rotation-order XYZ] -o OUT.bvh
+       lct-mocap info IN.lctm
+       lct-mocap analyse IN [-o DIR] [--quick]
+
+compress     IN: any file vtkSkeletonAnimationReader reads (BVH, FBX, glTF, Collada, X, ...).
+             The largest distance between an original and a decoded joint or End Site, at any
+             data row, is at most T: "1%" (default) is 1 % of the skeleton height H (the Y
+             extent of the rest pose), a number without % is in the file's units. The tool
+             decodes what it wrote and verifies the bound before it renames the file into place.
+             --frames A:B keeps rows A..B-1 only; --degree 1|2|3 fixes the curve degree
+             (default: per track the better of 1 and 3); --quiet drops the progress lines.
+decompress   writes the decoded motion as BVH: same joint names, hierarchy, offsets and frame
+             time; rotation channels in the input's order (or --rotation-order).
+info         the header and figures of an .lctm file.
+analyse      prints a table (and writes DIR/analysis.csv and DIR/analysis.png, default
+             DIR = .) of the position error (max, p99, mean, % of H) against the compression
+             factor for: Euler channels and rotation vectors kept every k-th row, Alexa's 4x4
+             logs and Polar logs reduced by PCA, uniform key subsampling with the LCT spline,
+             and this compressor at several tolerances.
+
+Factor = 4 bytes x data rows x channels of the input / output bytes. Outputs are written to a
+temporary name (.NAME.PID.part) and renamed; on failure nothing is left behind.
+exit codes: 0 ok, 1 error (unreadable or bad input, bound not met, write failed), 2 usage.
+)";
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// Writes `bytes` to `target` through a temporary in the same directory.
+bool WriteAtomically(const fs::path& target, const std::string& bytes, std::string& why)
+{
+  if (fs::is_directory(target))
+  {
+    why = target.string() + " is a directory";
+    return false;
+  }
+  const fs::path temporary = target.parent_path() /
+    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out)
+    {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      why = "cannot write " + temporary.string();
+      return false;
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, target, error);
+  if (error)
+  {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
+    return false;
+  }
+  return true;
+}
+
+bool ReadFile(const std::string& path, std::string& bytes, std::string& why)
+{
+  constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 30;
+  std::error_code error;
+  if (!fs::is_regular_file(path, error))
+  {
+    why = path + ": not a readable file";
+    return false;
+  }
+  if (fs::file_size(path, error) > kMaxFileBytes)
+  {
+    why = path + ": larger than 1 GiB";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (!in && !in.eof())
+  {
+    why = path + ": read error";
+    return false;
+  }
+  bytes = content.str();
+  return true;
+}
+
+struct Arguments
+{
+  std::string command;
+  std::string input;
+  std::string output;
+  std::string tolerance = "1%";
+  std::string frames;
+  std::string rotationOrder;
+  int degree = 0;
+  bool quiet = false;
+  bool quick = false;
+};
+
+/// Returns the usage error, or an empty string.
+std::string Parse(int argc, char* argv[], Arguments& a)
+{
+  if (argc < 2)
+  {
+    return "no command";
+  }
+  a.command = argv[1];
+  if (a.command == "-h" || a.command == "--help")
+  {
+    return "";
+  }
+  if (a.command != "compress" && a.command != "decompress" && a.command != "info" &&
+    a.command != "analyse" && a.command != "analyze")
+  {
+    return "unknown command '" + a.command + "'";
+  }
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& into) {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      into = argv[++i];
+      return true;
+    };
+    std::string v;
+    if (arg == "-o" || arg == "--output")
+    {
+      if (!value(a.output))
+      {
+        return arg + " needs a value";
+      }
+    }
+    else if (arg == "-t" || arg == "--tolerance")
+    {
+      if (!value(a.tolerance))
+      {
+        return arg + " needs a value";
+      }
+    }
+    else if (arg == "--frames")
+    {
+      if (!value(a.frames))
+      {
+        return arg + " needs a value";
+      }
+    }
+    else if (arg == "--rotation-order")
+    {
+      if (!value(a.rotationOrder))
+      {
+        return arg + " needs a value";
+      }
+    }
+    else if (arg == "--degree")
+    {
+      if (!value(v) || (v != "1" && v != "2" && v != "3"))
+      {
+        return "--degree takes 1, 2 or 3";
+      }
+      a.degree = std::atoi(v.c_str());
+    }
+    else if (arg == "--quiet")
+    {
+      a.quiet = true;
+    }
+    else if (arg == "--quick")
+    {
+      a.quick = true;
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      return "unknown option " + arg;
+    }
+    else if (a.input.empty())
+    {
+      a.input = arg;
+    }
+    else
+    {
+      return "more than one input file";
+    }
+  }
+  if (a.input.empty())
+  {
+    return "no input file";
+  }
+  if ((a.command == "compress" || a.command == "decompress") && a.output.empty())
+  {
+    return a.command + " needs -o OUT";
+  }
+  return "";
+}
+
+/// Reads IN through the module's reader; errors come back as text.
+bool ReadMotion(const std::string& path, lct_mocap::Clip& clip, std::string& why)
+{
+  vtkObject::GlobalWarningDisplayOff(); // the reader's errors are reported below, once
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  const lct::SkeletalAnimation* animation = reader->GetAnimation();
+  vtkObject::GlobalWarningDisplayOn();
+  if (!animation)
+  {
+    why = path + ": not a skeletal animation the reader takes (unreadable, empty, malformed, "
+                 "no animation, or non-finite values)";
+    return false;
+  }
+  clip.animation = *animation;
+  lct_mocap::ScanBVHHeader(path, clip);
+  return true;
+}
+
+bool Slice(lct_mocap::Clip& clip, const std::string& range, std::string& why)
+{
+  if (range.empty())
+  {
+    return true;
+  }
+  int first = 0;
+  int last = 0;
+  char colon = 0;
+  std::istringstream in(range);
+  if (!(in >> first >> colon >> last) || colon != ':' || !in.eof() || first < 0 ||
+    last <= first || last > clip.animation.frames)
+  {
+    why = "--frames " + range + ": want A:B with 0 <= A < B <= " +
+      std::to_string(clip.animation.frames);
+    return false;
+  }
+  lct::SkeletalAnimation& a = clip.animation;
+  const std::size_t joints = a.joints.size();
+  a.locals = std::vector<Eigen::Matrix4d>(a.locals.begin() + static_cast<std::ptrdiff_t>(first * joints),
+    a.locals.begin() + static_cast<std::ptrdiff_t>(last * joints));
+  a.frames = last - first;
+  return true;
+}
+
+int Compress(const Arguments& args)
+{
+  std::string why;
+  lct_mocap::Clip clip;
+  if (!ReadMotion(args.input, clip, why) || !Slice(clip, args.frames, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
+  double tolerance = 0.0;
+  if (!lct_mocap::ParseTolerance(args.tolerance, clip.height, tolerance, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 2;
+  }
+  lct::MotionMetadata metadata;
+  metadata.rotationOrder = clip.rotationOrder;
+  metadata.inputChannels = clip.channels;
+  metadata.height = clip.height;
+  lct::MotionCompressionOptions options;
+  options.tolerance = tolerance;
+  options.degree = args.degree;
+  if (!args.quiet)
+  {
+    options.progress = [](const std::string& line) { std::cerr << "  " << line << "\n"; };
+  }
+  lct::MotionCompressionReport report;
+  const auto start = Clock::now();
+  const lct::Result<std::string> file =
+    lct::compressMotion(clip.animation, metadata, options, &report, &why);
+  const double seconds = Seconds(start);
+  if (!file)
+  {
+    std::cerr << "lct-mocap: " << args.input << ": " << why << "; nothing written.\n";
+    return 1;
+  }
+  if (!WriteAtomically(args.output, file.value, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
+  const double raw = lct_mocap::RawBytes(clip);
+  const double duration = clip.animation.frames * clip.animation.frameTime;
+  std::printf("%s: %d rows x %d channels, %d joints, H = %.4g\n", args.input.c_str(),
+    clip.animation.frames, clip.channels, clip.animation.jointCount(), clip.height);
+  std::printf("tolerance %.4g (%.4g %% of H): max %.4g (%.4g %%), p99 %.4g, mean %.4g\n",
+    tolerance, 100.0 * tolerance / clip.height, report.error.max,
+    100.0 * report.error.max / clip.height, report.error.p99, report.error.mean);
+  std::printf("%s: %zu bytes, factor %.1f (raw %.0f bytes); %d curve tracks (%d cubic), %d "
+              "control points, %d constant tracks\n",
+    args.output.c_str(), report.bytes, raw / static_cast<double>(report.bytes), raw,
+    report.curveTracks, report.cubicTracks, report.controlPoints, report.constantTracks);
+  std::printf("compressed in %.2f s (%.1fx real time, %d trials)\n", seconds,
+    duration / seconds, report.trials);
+  return 0;
+}
+
+int Decompress(const Arguments& args)
+{
+  std::string bytes;
+  std::string why;
+  if (!ReadFile(args.input, bytes, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
+  lct::MotionMetadata metadata;
+  const auto start = Clock::now();
+  const lct::Result<lct::SkeletalAnimation> motion = lct::decompressMotion(bytes, &metadata, &why);
+  const double seconds = Seconds(start);
+  if (!motion)
+  {
+    std::cerr << "lct-mocap: " << args.input << ": " << why << "; nothing written.\n";
+    return 1;
+  }
+  const std::string order = args.rotationOrder.empty() ? metadata.rotationOrder : args.rotationOrder;
+  std::ostringstream text;
+  if (!lct::writeBVH(motion.value, order, text, &why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
+  if (!WriteAtomically(args.output, text.str(), why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
+  const double duration = motion.value.frames * motion.value.frameTime;
+  std::printf("%s: %d rows, %d joints; decoded in %.2f ms (%.0fx real time); wrote %s\n",
+    args.input.c_str(), motion.value.frames, motion.value.jointCount(), 1e3 * seconds,
+    duration / seconds, args.output.c_str());
+  return 0;
+}
+
+int Info(const Arguments& args)
+{
+  std::string bytes;
+  std::string why;
+  if (!ReadFile(args.input, bytes, why))
+  {
+    std::cerr << "lct-mocap: " << why << "\n";
+    return 1;
+  }
+  lct::MotionMetadata metadata;
+  const lct::Result<lct::SkeletalAnimation> motion = lct::decompressMotion(bytes, &metadata, &why);
+  if (!motion)
+  {
+    std::cerr << "lct-mocap: " << args.input << ": " << why << "\n";
+    return 1;
+  }
+  const double raw = 4.0 * motion.value.frames * metadata.inputChannels;
+  std::printf("%s: .lctm version 1, %zu bytes\n", args.input.c_str(), bytes.size());
+  std::printf("%d rows at %.6g s, %d joints, input channels %d, rotation order %s\n",
+    motion.value.frames, motion.value.frameTime, motion.value.jointCount(),
+    metadata.inputChannels, metadata.rotationOrder.c_str());
+  std::printf("tolerance %.4g (%.4g %% of H = %.4g), factor %.1f\n", metadata.tolerance,
+    metadata.height > 0 ? 100.0 * metadata.tolerance / metadata.height : 0.0, metadata.height,
+    raw / static_cast<double>(bytes.size()));
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Arguments args;
+  const std::string usageError = Parse(argc, argv, args);
+  if (args.command == "-h" || args.command == "--help")
+  {
+    std::cout << Usage;
+    return 0;
+  }
+  if (!usageError.empty())
+  {
+    std::cerr << "lct-mocap: " << usageError << "\n(lct-mocap --help for usage)\n";
+    return 2;
+  }
+  if (args.command == "compress")
+  {
+    return Compress(args);
+  }
+  if (args.command == "decompress")
+  {
+    return Decompress(args);
+  }
+  if (args.command == "info")
+  {
+    return Info(args);
+  }
+  lct_mocap::Clip clip;
+  std::string why;
+  if (!ReadMotion(args.input, clip, why))
+  {
+    std::cerr << "lct-mocap: " << why << "\n";
+    return 1;
+  }
+  return lct_mocap::Analyse(clip, args.output.empty() ? "." : args.output, args.quick);
+}
