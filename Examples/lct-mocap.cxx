@@ -15,8 +15,23 @@
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
 
+#include <vtkAxis.h>
+#include <vtkCommand.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkPlotPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTable.h>
+#include <vtkWindowToImageFilter.h>
 
 #include <unistd.h>
 
@@ -41,6 +56,7 @@ const char* const Usage =
   R"(usage: lct-mocap compress IN [--tolerance T] [--frames A:B] [--degree D] -o OUT.lctm
        lct-mocap decompress IN.lctm [--rotation-order XYZ] -o OUT.bvh
        lct-mocap info IN.lctm
+       lct-mocap compare A B [--tolerance T] [--frames A:B]
        lct-mocap analyse IN [-o DIR] [--quick]
 
 compress     IN: any file vtkSkeletonAnimationReader reads (BVH, FBX, glTF, Collada, X, ...).
@@ -53,6 +69,9 @@ compress     IN: any file vtkSkeletonAnimationReader reads (BVH, FBX, glTF, Coll
 decompress   writes the decoded motion as BVH: same joint names, hierarchy, offsets and frame
              time; rotation channels in the input's order (or --rotation-order).
 info         the header and figures of an .lctm file.
+compare      the position error of B against A (either a motion file or an .lctm): max, p99,
+             mean, where the max is; with --tolerance, exit 1 when the max exceeds it;
+             --frames A:B compares rows A..B-1 of the first file with the second.
 analyse      prints a table (and writes DIR/analysis.csv and DIR/analysis.png, default
              DIR = .) of the position error (max, p99, mean, % of H) against the compression
              factor for: Euler channels and rotation vectors kept every k-th row, Alexa's 4x4
@@ -69,40 +88,6 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
-}
-
-/// Writes `bytes` to `target` through a temporary in the same directory.
-bool WriteAtomically(const fs::path& target, const std::string& bytes, std::string& why)
-{
-  if (fs::is_directory(target))
-  {
-    why = target.string() + " is a directory";
-    return false;
-  }
-  const fs::path temporary = target.parent_path() /
-    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out)
-    {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      why = "cannot write " + temporary.string();
-      return false;
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, target, error);
-  if (error)
-  {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
-    return false;
-  }
-  return true;
 }
 
 bool ReadFile(const std::string& path, std::string& bytes, std::string& why)
@@ -135,8 +120,9 @@ struct Arguments
 {
   std::string command;
   std::string input;
+  std::string second; ///< compare: the file compared with `input`
   std::string output;
-  std::string tolerance = "1%";
+  std::string tolerance;
   std::string frames;
   std::string rotationOrder;
   int degree = 0;
@@ -157,7 +143,7 @@ std::string Parse(int argc, char* argv[], Arguments& a)
     return "";
   }
   if (a.command != "compress" && a.command != "decompress" && a.command != "info" &&
-    a.command != "analyse" && a.command != "analyze")
+    a.command != "compare" && a.command != "analyse" && a.command != "analyze")
   {
     return "unknown command '" + a.command + "'";
   }
@@ -225,6 +211,10 @@ std::string Parse(int argc, char* argv[], Arguments& a)
     {
       a.input = arg;
     }
+    else if (a.command == "compare" && a.second.empty())
+    {
+      a.second = arg;
+    }
     else
     {
       return "more than one input file";
@@ -234,6 +224,10 @@ std::string Parse(int argc, char* argv[], Arguments& a)
   {
     return "no input file";
   }
+  if (a.command == "compare" && a.second.empty())
+  {
+    return "compare needs two files";
+  }
   if ((a.command == "compress" || a.command == "decompress") && a.output.empty())
   {
     return a.command + " needs -o OUT";
@@ -241,22 +235,45 @@ std::string Parse(int argc, char* argv[], Arguments& a)
   return "";
 }
 
-/// Reads IN through the module's reader; errors come back as text.
+/// Keeps the text of the last error a VTK object reported.
+class ErrorText : public vtkCommand
+{
+public:
+  static ErrorText* New() { return new ErrorText; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    this->Last = callData ? static_cast<const char*>(callData) : "";
+  }
+  std::string Last;
+};
+
+/// Reads IN through the module's reader; its error comes back as text.
 bool ReadMotion(const std::string& path, lct_mocap::Clip& clip, std::string& why)
 {
-  vtkObject::GlobalWarningDisplayOff(); // the reader's errors are reported below, once
   vtkNew<vtkSkeletonAnimationReader> reader;
+  vtkNew<ErrorText> errors;
+  vtkNew<ErrorText> pipelineErrors; // the executive's "returned failure": said once, below
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipelineErrors);
   reader->SetFileName(path.c_str());
   reader->UpdateInformation();
   const lct::SkeletalAnimation* animation = reader->GetAnimation();
-  vtkObject::GlobalWarningDisplayOn();
   if (!animation)
   {
-    why = path + ": not a skeletal animation the reader takes (unreadable, empty, malformed, "
-                 "no animation, or non-finite values)";
+    // VTK's message is "ERROR: In <file>, line <n>\n<class> (<address>): <text>": keep <text>.
+    std::string text = errors->Last;
+    const std::size_t at = text.find("): ");
+    text = at == std::string::npos ? text : text.substr(at + 3);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    // The reader's messages start with the file name.
+    why = text.empty() ? path + ": not a skeletal animation the reader takes" : text;
     return false;
   }
   clip.animation = *animation;
+  clip.name = fs::path(path).filename().string();
   lct_mocap::ScanBVHHeader(path, clip);
   return true;
 }
@@ -296,7 +313,7 @@ int Compress(const Arguments& args)
     return 1;
   }
   double tolerance = 0.0;
-  if (!lct_mocap::ParseTolerance(args.tolerance, clip.height, tolerance, why))
+  if (!lct_mocap::ParseTolerance(args.tolerance.empty() ? "1%" : args.tolerance, clip.height, tolerance, why))
   {
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
     return 2;
@@ -322,7 +339,7 @@ int Compress(const Arguments& args)
     std::cerr << "lct-mocap: " << args.input << ": " << why << "; nothing written.\n";
     return 1;
   }
-  if (!WriteAtomically(args.output, file.value, why))
+  if (!lct_mocap::WriteAtomically(args.output, file.value, why))
   {
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
     return 1;
@@ -368,7 +385,7 @@ int Decompress(const Arguments& args)
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
     return 1;
   }
-  if (!WriteAtomically(args.output, text.str(), why))
+  if (!lct_mocap::WriteAtomically(args.output, text.str(), why))
   {
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
     return 1;
@@ -377,6 +394,79 @@ int Decompress(const Arguments& args)
   std::printf("%s: %d rows, %d joints; decoded in %.2f ms (%.0fx real time); wrote %s\n",
     args.input.c_str(), motion.value.frames, motion.value.jointCount(), 1e3 * seconds,
     duration / seconds, args.output.c_str());
+  return 0;
+}
+
+/// A motion from a file the reader takes, or from an .lctm file (by its signature).
+bool ReadAny(const std::string& path, lct_mocap::Clip& clip, std::string& why)
+{
+  std::string bytes;
+  std::ifstream probe(path, std::ios::binary);
+  char magic[4] = {};
+  if (probe.read(magic, 4) && std::memcmp(magic, "LCTM", 4) == 0)
+  {
+    lct::MotionMetadata metadata;
+    if (!ReadFile(path, bytes, why))
+    {
+      return false;
+    }
+    const lct::Result<lct::SkeletalAnimation> motion = lct::decompressMotion(bytes, &metadata, &why);
+    if (!motion)
+    {
+      why = path + ": " + why;
+      return false;
+    }
+    clip.animation = motion.value;
+    clip.name = fs::path(path).filename().string();
+    clip.height = lct::restPoseHeight(clip.animation);
+    return true;
+  }
+  return ReadMotion(path, clip, why);
+}
+
+int Compare(const Arguments& args)
+{
+  std::string why;
+  lct_mocap::Clip a;
+  lct_mocap::Clip b;
+  if (!ReadAny(args.input, a, why) || !ReadAny(args.second, b, why) || !Slice(a, args.frames, why))
+  {
+    std::cerr << "lct-mocap: " << why << "\n";
+    return 1;
+  }
+  if (a.animation.frames != b.animation.frames || a.animation.jointCount() != b.animation.jointCount())
+  {
+    std::cerr << "lct-mocap: " << args.input << " has " << a.animation.frames << " rows and "
+              << a.animation.jointCount() << " joints, " << args.second << " "
+              << b.animation.frames << " and " << b.animation.jointCount() << ": not comparable\n";
+    return 1;
+  }
+  for (int j = 0; j < a.animation.jointCount(); ++j)
+  {
+    if (a.animation.joints[static_cast<std::size_t>(j)].parent !=
+      b.animation.joints[static_cast<std::size_t>(j)].parent)
+    {
+      std::cerr << "lct-mocap: the hierarchies differ at joint " << j << "\n";
+      return 1;
+    }
+  }
+  double tolerance = 0.0;
+  if (!args.tolerance.empty() && !lct_mocap::ParseTolerance(args.tolerance, a.height, tolerance, why))
+  {
+    std::cerr << "lct-mocap: " << why << "\n";
+    return 2;
+  }
+  const lct::PositionErrorStatistics e =
+    lct::positionErrors(lct::worldPositions(a.animation), b.animation);
+  const double h = a.height > 0.0 ? 100.0 / a.height : 0.0;
+  std::printf("%s vs %s: max %.6g (%.4g %% of H), p99 %.6g, mean %.6g; worst at row %d, joint '%s'\n",
+    args.input.c_str(), args.second.c_str(), e.max, e.max * h, e.p99, e.mean, e.worstFrame,
+    a.animation.joints[static_cast<std::size_t>(e.worstJoint)].name.c_str());
+  if (!args.tolerance.empty() && !(e.max <= tolerance))
+  {
+    std::printf("over the tolerance %.6g\n", tolerance);
+    return 1;
+  }
   return 0;
 }
 
@@ -409,6 +499,138 @@ int Info(const Arguments& args)
 
 } // namespace
 
+bool lct_mocap::WriteAtomically(const fs::path& target, const std::string& bytes, std::string& why)
+{
+  if (fs::is_directory(target))
+  {
+    why = target.string() + " is a directory";
+    return false;
+  }
+  const fs::path temporary = target.parent_path() /
+    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out)
+    {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      why = "cannot write " + temporary.string();
+      return false;
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, target, error);
+  if (error)
+  {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
+    return false;
+  }
+  return true;
+}
+
+bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height,
+  const std::string& title, const std::string& png, std::string& why)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    why = "no DISPLAY for the PNG (run under xvfb-run -a); the table and the CSV are written";
+    return false;
+  }
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetSize(1000, 640);
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("compression factor (float32 channels / bytes)");
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle("max position error, % of skeleton height");
+  chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true);
+  chart->GetAxis(vtkAxis::LEFT)->SetLogScale(true);
+  const unsigned char palette[][3] = { { 31, 119, 180 }, { 255, 127, 14 }, { 44, 160, 44 },
+    { 214, 39, 40 }, { 148, 103, 189 }, { 0, 0, 0 } };
+  std::vector<std::string> names;
+  for (const AnalysisRow& r : rows)
+  {
+    if (std::find(names.begin(), names.end(), r.representation) == names.end())
+    {
+      names.push_back(r.representation);
+    }
+  }
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+  for (std::size_t n = 0; n < names.size(); ++n)
+  {
+    std::vector<std::pair<double, double>> points;
+    for (const AnalysisRow& r : rows)
+    {
+      if (r.representation == names[n] && r.factor > 0.0 && r.error.max > 0.0 &&
+        std::isfinite(r.error.max))
+      {
+        points.emplace_back(r.factor, 100.0 * r.error.max / height);
+      }
+    }
+    if (points.empty())
+    {
+      continue;
+    }
+    std::sort(points.begin(), points.end());
+    vtkNew<vtkTable> table;
+    vtkNew<vtkDoubleArray> factor;
+    factor->SetName("factor");
+    vtkNew<vtkDoubleArray> error;
+    error->SetName(names[n].c_str());
+    for (const auto& p : points)
+    {
+      factor->InsertNextValue(p.first);
+      error->InsertNextValue(p.second);
+    }
+    table->AddColumn(factor);
+    table->AddColumn(error);
+    tables.push_back(table);
+    vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+    line->SetInputData(table, 0, 1);
+    const unsigned char* c = palette[n % 6];
+    line->SetColor(c[0], c[1], c[2], 255);
+    line->SetWidth(n + 1 == names.size() ? 3.0f : 2.0f);
+    if (auto* points2D = vtkPlotPoints::SafeDownCast(line))
+    {
+      points2D->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+    }
+  }
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(view->GetRenderWindow());
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  const fs::path target = png;
+  const fs::path temporary = target.parent_path() /
+    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(temporary.c_str());
+  writer->Write();
+  std::error_code error;
+  if (writer->GetErrorCode() != 0 || !fs::is_regular_file(temporary, error))
+  {
+    fs::remove(temporary, error);
+    why = "cannot write " + temporary.string();
+    return false;
+  }
+  fs::rename(temporary, target, error);
+  if (error)
+  {
+    fs::remove(temporary, error);
+    why = "cannot rename " + temporary.string() + " to " + png;
+    return false;
+  }
+  return true;
+}
+
 int main(int argc, char* argv[])
 {
   Arguments args;
@@ -434,6 +656,10 @@ int main(int argc, char* argv[])
   if (args.command == "info")
   {
     return Info(args);
+  }
+  if (args.command == "compare")
+  {
+    return Compare(args);
   }
   lct_mocap::Clip clip;
   std::string why;
