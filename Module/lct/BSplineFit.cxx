@@ -170,11 +170,19 @@ Eigen::MatrixXd evaluateAtSamples(const BSplineCurve& curve)
   for (int f = 0; f < curve.samples; ++f)
   {
     const int first = walker.At(static_cast<double>(f), basis);
-    auto column = out.col(f);
-    column = basis[0] * curve.controlPoints.col(first);
+    // Plain loops: d is 3 or 6, too small for Eigen's dynamic-size expressions to pay.
+    double* column = out.data() + static_cast<std::ptrdiff_t>(f) * d;
+    const double* points = curve.controlPoints.data() + static_cast<std::ptrdiff_t>(first) * d;
+    for (int r = 0; r < d; ++r)
+    {
+      column[r] = basis[0] * points[r];
+    }
     for (int i = 1; i <= curve.degree; ++i)
     {
-      column += basis[i] * curve.controlPoints.col(first + i);
+      for (int r = 0; r < d; ++r)
+      {
+        column[r] += basis[i] * points[i * d + r];
+      }
     }
   }
   return out;
@@ -244,6 +252,7 @@ Result<BSplineCurve> fitLeastSquares(
   // zero on lines, so the penalty never pulls a well-determined fit, only fixes the free
   // directions.
   const int w = std::max(p, 2);
+  const int d = static_cast<int>(samples.rows());
   Eigen::MatrixXd band = Eigen::MatrixXd::Zero(w + 1, count);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(samples.rows(), count);
   BasisWalker walker(curve);
@@ -251,9 +260,14 @@ Result<BSplineCurve> fitLeastSquares(
   for (int f = 0; f < n; ++f)
   {
     const int first = walker.At(static_cast<double>(f), basis);
+    const double* y = samples.data() + static_cast<std::ptrdiff_t>(f) * d;
     for (int a = 0; a <= p; ++a)
     {
-      rhs.col(first + a) += basis[a] * samples.col(f);
+      double* r = rhs.data() + static_cast<std::ptrdiff_t>(first + a) * d;
+      for (int i = 0; i < d; ++i)
+      {
+        r[i] += basis[a] * y[i];
+      }
       for (int b = a; b <= p; ++b)
       {
         band(b - a, first + a) += basis[a] * basis[b];

@@ -425,7 +425,8 @@ Status toTracks(const SkeletalAnimation& a, double tolerance, MotionTracks& trac
       for (int k : below[static_cast<std::size_t>(j)])
       {
         bool reached = true;
-        for (int i = a.joints[static_cast<std::size_t>(k)].parent; tracks.compensate && i != j;
+        for (int i = a.joints[static_cast<std::size_t>(k)].parent;
+             tracks.compensate && tracks.compensation > 0 && i != j;
              i = a.joints[static_cast<std::size_t>(i)].parent)
         {
           reached = reached && tracks.joints[static_cast<std::size_t>(i)][1].kind != TrackKind::Curve;
@@ -442,20 +443,20 @@ Status toTracks(const SkeletalAnimation& a, double tolerance, MotionTracks& trac
       rotation.jacobians.resize(static_cast<std::size_t>(frames));
       for (int f = 0; f < frames; ++f)
       {
-        worldTransforms(a, f, world);
-        const Eigen::Matrix4d& wj = world[static_cast<std::size_t>(j)];
-        const Eigen::Matrix3d frameOfJoint = wj.block<3, 3>(0, 0);
+        const std::size_t at = static_cast<std::size_t>(f) * joints;
+        // The linear part of the world transform may stretch; its inverse maps back.
+        const Eigen::Matrix3d toJoint = tracks.worldRotations[at + static_cast<std::size_t>(j)].inverse();
+        const Eigen::Map<const Eigen::Vector3d> pj(&positions[3 * (at + static_cast<std::size_t>(j))]);
         for (int i = 0; i < rotation.armCount; ++i)
         {
-          const Eigen::Matrix4d& wk = world[static_cast<std::size_t>(arms[static_cast<std::size_t>(i)])];
-          // The linear part of the world transform may stretch; its inverse maps back.
+          const std::size_t k = at + static_cast<std::size_t>(arms[static_cast<std::size_t>(i)]);
           auto arm = rotation.arms.col(static_cast<Eigen::Index>(f) * rotation.armCount + i);
-          arm = frameOfJoint.inverse() * (wk.block<3, 1>(0, 3) - wj.block<3, 1>(0, 3));
+          arm = toJoint * (Eigen::Map<const Eigen::Vector3d>(&positions[3 * k]) - pj);
           armReach = std::max(armReach, arm.norm());
         }
         rotation.jacobians[static_cast<std::size_t>(f)] = rightJacobian(rotation.samples.col(f));
       }
-      if (tracks.compensate)
+      if (tracks.compensate && tracks.compensation > 0)
       {
         rotation.positionScale = std::max(armReach, tolerance);
       }
