@@ -1,0 +1,176 @@
+#include "vtkMotionCodecLCT.h"
+
+#include "vtkSkeletonAnimationReader.h"
+
+#include "lct/BVHWriter.h"
+#include "lct/MotionCodec.h"
+#include "lct/MotionError.h"
+
+#include "vtkObjectFactory.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+vtkStandardNewMacro(vtkMotionCodecLCT);
+
+namespace
+{
+
+/// Writes `bytes` to `target` through `target.part`, renamed when complete.
+bool WriteAtomically(const std::string& target, const std::string& bytes, std::string& why)
+{
+  const std::string temporary = target + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out)
+    {
+      std::remove(temporary.c_str());
+      why = "cannot write " + temporary;
+      return false;
+    }
+  }
+  if (std::rename(temporary.c_str(), target.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    why = "cannot rename " + temporary + " into place";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkMotionCodecLCT::vtkMotionCodecLCT() = default;
+
+//------------------------------------------------------------------------------
+vtkMotionCodecLCT::~vtkMotionCodecLCT()
+{
+  this->SetRotationOrder(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkMotionCodecLCT::ResetFigures()
+{
+  this->CompressedBytes = 0;
+  this->CompressionFactor = 0.0;
+  this->MaximumError = 0.0;
+  this->P99Error = 0.0;
+  this->MeanError = 0.0;
+  this->SkeletonHeight = 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkMotionCodecLCT::Compress(vtkSkeletonAnimationReader* reader, const char* fileName)
+{
+  this->ResetFigures();
+  const lct::SkeletalAnimation* animation = reader ? reader->GetAnimation() : nullptr;
+  if (!animation || !fileName || !*fileName)
+  {
+    vtkErrorMacro(<< "Compress: "
+                  << (!reader ? "no reader"
+                       : !animation ? "the reader has no animation (UpdateInformation() first)"
+                                    : "no file name")
+                  << "; nothing written.");
+    return 0;
+  }
+  const double height = lct::restPoseHeight(*animation);
+  const double tolerance = this->Tolerance > 0.0 ? this->Tolerance : this->RelativeTolerance * height;
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || !std::isfinite(this->Tolerance))
+  {
+    vtkErrorMacro(<< "Compress: the tolerance " << tolerance
+                  << " is not positive and finite (Tolerance " << this->Tolerance
+                  << ", RelativeTolerance " << this->RelativeTolerance << ", H " << height
+                  << "); nothing written.");
+    return 0;
+  }
+  lct::MotionMetadata metadata;
+  metadata.rotationOrder = this->RotationOrder ? this->RotationOrder : "ZYX";
+  metadata.height = height;
+  int channels = 0;
+  for (const lct::SkeletonJoint& joint : animation->joints)
+  {
+    channels += joint.endSite ? 0 : joint.parent < 0 ? 6 : 3;
+  }
+  metadata.inputChannels = channels;
+  lct::MotionCompressionOptions options;
+  options.tolerance = tolerance;
+  lct::MotionCompressionReport report;
+  std::string why;
+  const lct::Result<std::string> file =
+    lct::compressMotion(*animation, metadata, options, &report, &why);
+  if (!file)
+  {
+    vtkErrorMacro(<< "Compress: " << why << "; nothing written.");
+    return 0;
+  }
+  if (!WriteAtomically(fileName, file.value, why))
+  {
+    vtkErrorMacro(<< "Compress: " << why << "; nothing written.");
+    return 0;
+  }
+  this->CompressedBytes = static_cast<vtkIdType>(file.value.size());
+  this->CompressionFactor =
+    4.0 * animation->frames * channels / static_cast<double>(file.value.size());
+  this->MaximumError = report.error.max;
+  this->P99Error = report.error.p99;
+  this->MeanError = report.error.mean;
+  this->SkeletonHeight = height;
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMotionCodecLCT::Decompress(const char* lctmFile, const char* bvhFile)
+{
+  if (!lctmFile || !*lctmFile || !bvhFile || !*bvhFile)
+  {
+    vtkErrorMacro(<< "Decompress: no file name; nothing written.");
+    return 0;
+  }
+  std::ifstream in(lctmFile, std::ios::binary);
+  if (!in)
+  {
+    vtkErrorMacro(<< "Decompress: " << lctmFile << " cannot be read; nothing written.");
+    return 0;
+  }
+  std::ostringstream content;
+  content << in.rdbuf();
+  lct::MotionMetadata metadata;
+  std::string why;
+  const lct::Result<lct::SkeletalAnimation> motion =
+    lct::decompressMotion(content.str(), &metadata, &why);
+  if (!motion)
+  {
+    vtkErrorMacro(<< "Decompress: " << lctmFile << ": " << why << "; nothing written.");
+    return 0;
+  }
+  std::ostringstream text;
+  const std::string order = this->RotationOrder ? this->RotationOrder : metadata.rotationOrder;
+  if (!lct::writeBVH(motion.value, order, text, &why) || !WriteAtomically(bvhFile, text.str(), why))
+  {
+    vtkErrorMacro(<< "Decompress: " << why << "; nothing written.");
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMotionCodecLCT::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
+  os << indent << "RotationOrder: " << (this->RotationOrder ? this->RotationOrder : "(null)") << "\n";
+  os << indent << "CompressedBytes: " << this->CompressedBytes << "\n";
+  os << indent << "CompressionFactor: " << this->CompressionFactor << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "P99Error: " << this->P99Error << "\n";
+  os << indent << "MeanError: " << this->MeanError << "\n";
+  os << indent << "SkeletonHeight: " << this->SkeletonHeight << "\n";
+}

@@ -1,0 +1,86 @@
+"""vtkMotionCodecLCT from Python: a CMU clip compressed to 1 % of its height, decoded to BVH and
+read back within the bound; a corrupted file and a bad tolerance refused, nothing written.
+
+Run by CTest as `/usr/bin/python3 TestMotionCodec.py`; exits 125 (skipped) without the
+assimp-testmodels data.
+"""
+import math
+import os
+import sys
+import unittest
+
+from lct_testing import ErrorRecorder
+
+from vtklct import vtkMotionCodecLCT, vtkSkeletonAnimationReader
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
+
+CLIP = "/usr/share/assimp/models/BVH/Boxing_Toes.bvh"
+OUT = os.environ.get("LCT_TEST_OUTPUT_DIR", ".")
+
+
+def read(path):
+    reader = vtkSkeletonAnimationReader()
+    reader.SetFileName(path)
+    reader.UpdateInformation()
+    return reader
+
+
+def world_position(reader, joint, frame):
+    m = vtkMatrix4x4()
+    assert reader.GetWorldTransform(joint, frame, m) == 1
+    return [m.GetElement(i, 3) for i in range(3)]
+
+
+class MotionCodecTest(unittest.TestCase):
+    def test_round_trip_holds_the_bound(self):
+        reader = read(CLIP)
+        codec = vtkMotionCodecLCT()
+        codec.SetRelativeTolerance(0.01)
+        codec.SetRotationOrder("ZXY")
+        lctm = os.path.join(OUT, "codec-python.lctm")
+        self.assertEqual(codec.Compress(reader, lctm), 1)
+        tolerance = 0.01 * codec.GetSkeletonHeight()
+        self.assertGreater(codec.GetCompressionFactor(), 35.0)
+        self.assertLessEqual(codec.GetMaximumError(), tolerance)
+        self.assertLessEqual(codec.GetMeanError(), codec.GetP99Error())
+        self.assertEqual(codec.GetCompressedBytes(), os.path.getsize(lctm))
+        bvh = os.path.join(OUT, "codec-python.bvh")
+        self.assertEqual(vtkMotionCodecLCT().Decompress(lctm, bvh), 1)
+        decoded = read(bvh)
+        self.assertEqual(decoded.GetNumberOfFrames(), reader.GetNumberOfFrames())
+        self.assertEqual(decoded.GetNumberOfJoints(), reader.GetNumberOfJoints())
+        worst = 0.0
+        for frame in range(0, reader.GetNumberOfFrames(), 7):
+            for joint in range(reader.GetNumberOfJoints()):
+                worst = max(worst, math.dist(world_position(reader, joint, frame),
+                                             world_position(decoded, joint, frame)))
+        # 10 significant digits in the BVH text and float32 parsing add ~1e-6 of H.
+        self.assertLessEqual(worst, tolerance * (1 + 1e-4))
+
+    def test_bad_input_is_refused(self):
+        codec = vtkMotionCodecLCT()
+        errors = ErrorRecorder(codec)
+        target = os.path.join(OUT, "codec-python-bad.lctm")
+        if os.path.exists(target):
+            os.remove(target)
+        self.assertEqual(codec.Compress(vtkSkeletonAnimationReader(), target), 0)
+        self.assertIn("UpdateInformation", errors.messages[-1])
+        codec.SetRelativeTolerance(-0.01)
+        self.assertEqual(codec.Compress(read(CLIP), target), 0)
+        self.assertIn("not positive and finite", errors.messages[-1])
+        self.assertFalse(os.path.exists(target))
+        self.assertEqual(codec.GetCompressedBytes(), 0)
+        corrupted = os.path.join(OUT, "codec-python-corrupted.lctm")
+        with open(corrupted, "wb") as f:
+            f.write(b"LCTM\x01\x00\x00\x00" + bytes(40))
+        bvh = os.path.join(OUT, "codec-python-never.bvh")
+        self.assertEqual(codec.Decompress(corrupted, bvh), 0)
+        self.assertIn("corrupted", errors.messages[-1])
+        self.assertFalse(os.path.exists(bvh))
+
+
+if __name__ == "__main__":
+    if not os.path.exists(CLIP):
+        print("skipped: assimp-testmodels is not installed")
+        sys.exit(125)
+    unittest.main()
