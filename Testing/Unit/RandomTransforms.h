@@ -150,6 +150,19 @@ public:
     return m;
   }
 
+  /// One step of a keyframed animation (the benchmarks' key walks): a rotation of up to 30
+  /// degrees about a random axis, up to 15 % of non-uniform scale change, and a translation a
+  /// tenth of a Rigid one.
+  Eigen::Matrix4d KeyframeStep()
+  {
+    const Eigen::Vector3d s(
+      this->LogUniform(0.87, 1.15), this->LogUniform(0.87, 1.15), this->LogUniform(0.87, 1.15));
+    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
+    step.topLeftCorner<3, 3>() = this->Rotation(this->Uniform(0.0, 0.52)) * s.asDiagonal();
+    step.topRightCorner<3, 1>() = this->Translation(TransformClass::Rigid) / 10.0;
+    return step;
+  }
+
 private:
   std::mt19937_64 Engine;
 };
