@@ -176,14 +176,25 @@ struct vtkCameraInterpolatorLCT::Internals
     return true;
   }
 
-  /// Builds the camera-matrix logs and checks every log that curve points of `type` combine.
-  /// On failure nothing changes.
+  /// Checks every camera-matrix log that curve points of `type` combine, in the logs when they
+  /// are current, else building them. On failure nothing changes.
   bool ValidateCameraMatrices(int type, std::string& why)
   {
     this->OrientationLogs(); // flattens the keys
     std::lock_guard<std::mutex> lock(this->Mutex);
-    lct::KeyLogs logs{ lct::Parametrisation::MatrixLog };
     lct::MissingLog missing;
+    if (this->CameraMatricesCurrent && this->CameraMatricesStatus == lct::Status::Ok)
+    {
+      missing = this->CameraMatrices.missingLog(CameraMatrixNeeds(type));
+      if (missing.missing())
+      {
+        why = describeMissing(
+          missing, this->Keys[missing.key].Time, this->Keys[missing.reference].Time, type);
+        return false;
+      }
+      return true;
+    }
+    lct::KeyLogs logs{ lct::Parametrisation::MatrixLog };
     logs.build(Matrices(this->Keys, [](const Key& k) -> Eigen::Matrix4d { return k.CameraMatrix; }),
       lct::Parametrisation::MatrixLog, true, CameraMatrixNeeds(type), &missing);
     if (missing.missing())
