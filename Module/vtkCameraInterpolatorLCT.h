@@ -117,6 +117,8 @@ public:
    */
   int SetInterpolationType(int type);
   vtkGetMacro(InterpolationType, int);
+  int GetInterpolationTypeMinValue() { return INTERPOLATION_TYPE_LINEAR; }
+  int GetInterpolationTypeMaxValue() { return INTERPOLATION_TYPE_SUBDIVISION; }
   int SetInterpolationTypeToLinear()
   {
     return this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR);
@@ -167,6 +169,8 @@ public:
    */
   int SetMethod(int method);
   vtkGetMacro(Method, int);
+  int GetMethodMinValue() { return METHOD_FOCAL_FRAME; }
+  int GetMethodMaxValue() { return METHOD_CAMERA_MATRIX; }
   int SetMethodToFocalFrame() { return this->SetMethod(METHOD_FOCAL_FRAME); }
   int SetMethodToCameraMatrix() { return this->SetMethod(METHOD_CAMERA_MATRIX); }
   ///@}

@@ -152,6 +152,8 @@ public:
    */
   int SetInterpolationType(int type);
   vtkGetMacro(InterpolationType, int);
+  int GetInterpolationTypeMinValue() { return INTERPOLATION_TYPE_LINEAR; }
+  int GetInterpolationTypeMaxValue() { return INTERPOLATION_TYPE_BEZIER; }
   int SetInterpolationTypeToLinear()
   {
     return this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR);
