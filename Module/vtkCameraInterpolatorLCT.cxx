@@ -14,6 +14,8 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkCameraInterpolatorLCT);
@@ -69,12 +71,36 @@ struct Key
   lct::CameraKey Camera;
   Eigen::Matrix4d CameraMatrix; ///< Hawkins & Grimm's P_b S V, for METHOD_CAMERA_MATRIX
 };
+
+const char* typeName(int type)
+{
+  static const char* const names[] = { "Linear", "Spline", "BSpline", "Subdivision" };
+  return names[std::clamp(type, 0, 3)];
+}
+
+/// Why the camera matrices of keys at times `key` and `reference` cannot be combined by curve
+/// points of `type` (METHOD_CAMERA_MATRIX), for an error message.
+std::string describeMissing(const lct::MissingLog& missing, double key, double reference, int type)
+{
+  std::ostringstream os;
+  os << "with the CameraMatrix method the " << typeName(type)
+     << " curve combines the camera matrix of the key at t = " << lct::formatNumber(key)
+     << " with that of the key at t = " << lct::formatNumber(reference)
+     << " as its reference, but the step between them has no MatrixLog logarithm: "
+     << lct::describe(missing.status)
+     << " (the default FocalFrame method, SetMethodToFocalFrame(), interpolates any turn)";
+  return os.str();
+}
 } // namespace
 
 /// The keys and the logs of their orientations. Only the orientation of the focal frame goes
 /// through the key logs: its translation, the focal point, is interpolated linearly (combining
 /// whole rigid frames in Polar coordinates would move a focal point that the keys share).
-/// Rotations always have logs, so those updates cannot fail. Edits change the keys in O(log n)
+/// Rotations always have logs (the relative and the absolute ones of every key: lct/KeyLogs.h),
+/// so those updates cannot fail and no curve point misses one. The camera matrices of the
+/// CameraMatrix method may lack a MatrixLog step: under that method every edit and setting is
+/// checked first (CheckCameraMatrices, ValidateCameraMatrices), as vtkTransformInterpolatorLCT
+/// checks its keys. Edits change the keys in O(log n)
 /// and mark the logs stale (appends and replacements update current logs in place); the first
 /// evaluation after that rebuilds them, under a mutex, so that evaluations may run concurrently
 /// once the keys stop changing.
@@ -129,6 +155,58 @@ struct vtkCameraInterpolatorLCT::Internals
         lct::Parametrisation::MatrixLog, true);
     });
     return this->CameraMatrices;
+  }
+
+  static lct::CurveNeeds CameraMatrixNeeds(int type) { return { toScheme(type), false }; }
+
+  /// Whether an edit at time t (`replacement` the key set there, null for a removal) keeps every
+  /// camera-matrix log that curve points of `type` combine; else `why` says which is missing.
+  bool CheckCameraMatrices(double t, const Key* replacement, int type, std::string& why) const
+  {
+    const lct::KeyWindow<Key> window = lct::keyWindow(this->Keys, t, replacement);
+    const lct::MissingLog missing = lct::missingAfterEdit(
+      window, replacement == nullptr, [](const Key& key) { return key.CameraMatrix; },
+      lct::Parametrisation::MatrixLog, CameraMatrixNeeds(type), false);
+    if (missing.missing())
+    {
+      why = describeMissing(
+        missing, window.keys[missing.key]->Time, window.keys[missing.reference]->Time, type);
+      return false;
+    }
+    return true;
+  }
+
+  /// Checks every camera-matrix log that curve points of `type` combine, in the logs when they
+  /// are current, else building them. On failure nothing changes.
+  bool ValidateCameraMatrices(int type, std::string& why)
+  {
+    this->OrientationLogs(); // flattens the keys
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    lct::MissingLog missing;
+    if (this->CameraMatricesCurrent && this->CameraMatricesStatus == lct::Status::Ok)
+    {
+      missing = this->CameraMatrices.missingLog(CameraMatrixNeeds(type));
+      if (missing.missing())
+      {
+        why = describeMissing(
+          missing, this->Keys[missing.key].Time, this->Keys[missing.reference].Time, type);
+        return false;
+      }
+      return true;
+    }
+    lct::KeyLogs logs{ lct::Parametrisation::MatrixLog };
+    logs.build(Matrices(this->Keys, [](const Key& k) -> Eigen::Matrix4d { return k.CameraMatrix; }),
+      lct::Parametrisation::MatrixLog, true, CameraMatrixNeeds(type), &missing);
+    if (missing.missing())
+    {
+      why = describeMissing(
+        missing, this->Keys[missing.key].Time, this->Keys[missing.reference].Time, type);
+      return false;
+    }
+    this->CameraMatrices = std::move(logs);
+    this->CameraMatricesStatus = lct::Status::Ok;
+    this->CameraMatricesCurrent = true;
+    return true;
   }
 
   void Add(const Key& key)
@@ -249,20 +327,81 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << "; key rejected.");
     return 0;
   }
-  this->Internal->Add(Key{ t, key.value, lct::cameraMatrix(parameters.value) });
+  const Key added{ t, key.value, lct::cameraMatrix(parameters.value) };
+  std::string missing;
+  if (this->Method == METHOD_CAMERA_MATRIX &&
+    !this->Internal->CheckCameraMatrices(t, &added, this->InterpolationType, missing))
+  {
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << missing
+                  << "; key rejected.");
+    return 0;
+  }
+  this->Internal->Add(added);
   this->Modified();
   return 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkCameraInterpolatorLCT::RemoveCamera(double t)
+int vtkCameraInterpolatorLCT::RemoveCamera(double t)
 {
   if (!this->Internal->Keys.find(t))
   {
-    return;
+    return 1;
+  }
+  std::string missing;
+  if (this->Method == METHOD_CAMERA_MATRIX &&
+    !this->Internal->CheckCameraMatrices(t, nullptr, this->InterpolationType, missing))
+  {
+    vtkErrorMacro(<< "RemoveCamera(" << lct::formatNumber(t) << "): without this key, " << missing
+                  << "; not removed.");
+    return 0;
   }
   this->Internal->Remove(t);
   this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::SetInterpolationType(int type)
+{
+  type = std::clamp(type, static_cast<int>(INTERPOLATION_TYPE_LINEAR),
+    static_cast<int>(INTERPOLATION_TYPE_SUBDIVISION));
+  if (type == this->InterpolationType)
+  {
+    return 1;
+  }
+  std::string missing;
+  if (this->Method == METHOD_CAMERA_MATRIX &&
+    !this->Internal->ValidateCameraMatrices(type, missing))
+  {
+    vtkErrorMacro(<< "SetInterpolationType(" << typeName(type) << "): " << missing
+                  << "; unchanged.");
+    return 0;
+  }
+  this->InterpolationType = type;
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::SetMethod(int method)
+{
+  method = std::clamp(
+    method, static_cast<int>(METHOD_FOCAL_FRAME), static_cast<int>(METHOD_CAMERA_MATRIX));
+  if (method == this->Method)
+  {
+    return 1;
+  }
+  std::string missing;
+  if (method == METHOD_CAMERA_MATRIX &&
+    !this->Internal->ValidateCameraMatrices(this->InterpolationType, missing))
+  {
+    vtkErrorMacro(<< "SetMethod(CameraMatrix): " << missing << "; unchanged.");
+    return 0;
+  }
+  this->Method = method;
+  this->Modified();
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -333,6 +472,8 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
       : lct::Result<lct::CameraParameters>::failure(matrixStatus);
     if (!fromMatrix)
     {
+      // A missing log cannot be the cause (every key set under this method was checked): the
+      // combination's exp, or the decomposition of its result.
       vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "), CameraMatrix method: "
                     << lct::describe(fromMatrix.status) << "; camera unchanged.");
       return 0;

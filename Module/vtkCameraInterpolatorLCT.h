@@ -81,14 +81,18 @@ public:
 
   /**
    * Add a key camera at time t (copied; a key at an existing time is replaced). Returns 1 on
-   * success, 0 (with an error, interpolator unchanged) for a bad key (see the class description).
+   * success, 0 (with an error, interpolator unchanged) for a bad key (see the class description),
+   * or with the CameraMatrix method for one whose camera matrix lacks a logarithm a curve point
+   * combines (see SetMethod).
    */
   int AddCamera(double t, vtkCamera* camera);
 
   /**
-   * Remove the key at time t (if any).
+   * Remove the key at time t (if any). Returns 1 when it was removed or there was none; 0, with
+   * an error and the key kept, when (CameraMatrix method) the keys it leaves would make a curve
+   * point combine a camera-matrix logarithm that does not exist.
    */
-  void RemoveCamera(double t);
+  int RemoveCamera(double t);
 
   /**
    * Set `camera` to the interpolated camera at time t (clamped to the key range). Returns 1 on
@@ -107,16 +111,29 @@ public:
   ///@{
   /**
    * The curve scheme (see vtkTransformInterpolatorLCT). Default: Spline, as vtkCameraInterpolator.
+   * A value out of range is clamped. Returns 1, or 0 with an error (type unchanged) when, with
+   * the CameraMatrix method, a curve point of the new type would combine a camera-matrix
+   * logarithm that does not exist.
    */
-  vtkSetClampMacro(
-    InterpolationType, int, INTERPOLATION_TYPE_LINEAR, INTERPOLATION_TYPE_SUBDIVISION);
+  int SetInterpolationType(int type);
   vtkGetMacro(InterpolationType, int);
-  void SetInterpolationTypeToLinear() { this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR); }
-  void SetInterpolationTypeToSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE); }
-  void SetInterpolationTypeToBSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_BSPLINE); }
-  void SetInterpolationTypeToSubdivision()
+  int GetInterpolationTypeMinValue() { return INTERPOLATION_TYPE_LINEAR; }
+  int GetInterpolationTypeMaxValue() { return INTERPOLATION_TYPE_SUBDIVISION; }
+  int SetInterpolationTypeToLinear()
   {
-    this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
+    return this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR);
+  }
+  int SetInterpolationTypeToSpline()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE);
+  }
+  int SetInterpolationTypeToBSpline()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_BSPLINE);
+  }
+  int SetInterpolationTypeToSubdivision()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
   }
   ///@}
 
@@ -143,12 +160,19 @@ public:
    * the matrix P_b S V (window centre, focal length and view transform together) by its matrix
    * log relative to the key of largest weight, decomposed back by RQ; skew and anisotropy that
    * appear in between are dropped. Offered for comparison: it moves scene points more, and a step
-   * without a real matrix log (large turns) makes InterpolateCamera fail with an error.
+   * between camera matrices without a real matrix log (large turns) cannot be interpolated.
+   * Under this method, AddCamera, RemoveCamera and SetInterpolationType refuse (with an error
+   * naming the keys, unchanged) keys with which a curve point would combine such a step, and
+   * SetMethod(METHOD_CAMERA_MATRIX) returns 0 (method unchanged) for keys that have one, so an
+   * accepted key set never fails InterpolateCamera for a missing log. The FocalFrame method
+   * combines rotations only, which always have logarithms.
    */
-  vtkSetClampMacro(Method, int, METHOD_FOCAL_FRAME, METHOD_CAMERA_MATRIX);
+  int SetMethod(int method);
   vtkGetMacro(Method, int);
-  void SetMethodToFocalFrame() { this->SetMethod(METHOD_FOCAL_FRAME); }
-  void SetMethodToCameraMatrix() { this->SetMethod(METHOD_CAMERA_MATRIX); }
+  int GetMethodMinValue() { return METHOD_FOCAL_FRAME; }
+  int GetMethodMaxValue() { return METHOD_CAMERA_MATRIX; }
+  int SetMethodToFocalFrame() { return this->SetMethod(METHOD_FOCAL_FRAME); }
+  int SetMethodToCameraMatrix() { return this->SetMethod(METHOD_CAMERA_MATRIX); }
   ///@}
 
 protected:

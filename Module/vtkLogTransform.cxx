@@ -1,6 +1,5 @@
 #include "vtkLogTransform.h"
 
-#include "lct/Affine.h"
 #include "lct/Combination.h"
 #include "lct/Format.h"
 #include "lct/Parametrisation.h"
@@ -33,18 +32,18 @@ Eigen::Matrix4d toEigen(const double elements[16])
 }
 } // namespace
 
-/// The coordinates and the matrix they stand for, always updated together.
+/// The coordinates and the matrix they stand for, and those of the inverse map, always updated
+/// together. The inverse is computed when a state is committed, by the only path Inverse() could
+/// take (MatrixLog: exp(-c); Polar: lct::polarInverse, then its exp), so that a state whose
+/// inverse is not representable is refused where it is set, and Inverse() only swaps the two:
+/// it cannot fail, inverting twice restores the state exactly, and GetInverse() (VTK's DeepCopy
+/// + Inverse() on a hidden object) always holds the inverse.
 struct vtkLogTransform::State
 {
   lct::LogCoords Coordinates = lct::LogCoords::Zero();
   Eigen::Matrix4d Matrix = Eigen::Matrix4d::Identity();
-  /// After Inverse(): the state it inverted, so that the next Inverse() restores it exactly
-  /// instead of recomputing an inverse from the rounded matrix of an inverse (which, for an
-  /// ill-conditioned map with a translation near DBL_MAX, overflows although the state it
-  /// came from is finite).
-  bool HasInverse = false;
-  lct::LogCoords InverseCoordinates;
-  Eigen::Matrix4d InverseMatrix;
+  lct::LogCoords InverseCoordinates = lct::LogCoords::Zero();
+  Eigen::Matrix4d InverseMatrix = Eigen::Matrix4d::Identity();
 };
 
 //------------------------------------------------------------------------------
@@ -60,42 +59,45 @@ vtkLogTransform::~vtkLogTransform()
 }
 
 //------------------------------------------------------------------------------
-// The only place the state changes: the coordinates are committed with their matrix, and only
-// when that matrix is finite.
-bool vtkLogTransform::Commit(
-  const double* coordinates, int parametrisation, const char* caller, bool inverseHeld)
+// The only place the state changes: the coordinates are committed with their matrix and the
+// inverse state, and only when both matrices are finite.
+bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, const char* caller)
 {
   const lct::LogCoords c = Eigen::Map<const lct::LogCoords>(coordinates);
-  const auto matrix = lct::exponential(c, toCore(parametrisation));
+  const lct::Parametrisation p = toCore(parametrisation);
+  const auto matrix = lct::exponential(c, p);
   if (!matrix)
   {
     vtkErrorMacro(<< caller << ": the resulting transform is not representable: "
                   << lct::describe(matrix.status) << "; unchanged.");
     return false;
   }
-  // Every state can also be inverted (Inverse(), GetInverse()): the inverse must be finite and
-  // its smallest stretch 1 / sigma_max normal, which ||A||_F < 1 / DBL_MIN guarantees.
+  // The inverse state, as Inverse() will hand it out. MatrixLog: the principal log of M^-1 is
+  // -log M. Polar: psi(M^-1) != -psi(M) unless the factors commute, but it has a closed form that
+  // keeps the winding of the rotation exactly, (-A^-1 l, -w, -U Y U^T). Its matrix must be finite
+  // and its smallest stretch 1 / sigma_max normal, which ||A||_F < 1 / DBL_MIN guarantees in
+  // either parametrisation.
+  const auto inverseCoordinates = p == lct::Parametrisation::MatrixLog
+    ? lct::Result<lct::LogCoords>{ lct::LogCoords(-c), lct::Status::Ok }
+    : lct::polarInverse(c, matrix.value);
+  const auto inverse = inverseCoordinates
+    ? lct::exponential(inverseCoordinates.value, p)
+    : lct::Result<Eigen::Matrix4d>::failure(inverseCoordinates.status);
   const Eigen::Matrix3d linear = matrix.value.topLeftCorner<3, 3>();
   const double largest = linear.cwiseAbs().maxCoeff();
-  const bool invertible = inverseHeld ||
-    (lct::inverseAffine(matrix.value).allFinite() &&
-      largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min());
-  if (!invertible)
+  if (!inverse || !(largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min()))
   {
-    vtkErrorMacro(<< caller << ": the inverse of the resulting transform overflows double "
-                  << "precision (a vtkLogTransform only holds maps it can also invert); "
-                  << "unchanged.");
+    vtkErrorMacro(<< caller << ": the inverse of the resulting transform is not representable: "
+                  << lct::describe(inverse ? lct::Status::OutOfRange : inverse.status)
+                  << "; a vtkLogTransform only holds maps it can also invert, so that Inverse() "
+                  << "and GetInverse() always succeed; unchanged.");
     return false;
   }
   State& state = *this->Internal;
-  state.HasInverse = inverseHeld;
-  if (inverseHeld)
-  {
-    state.InverseCoordinates = state.Coordinates;
-    state.InverseMatrix = state.Matrix;
-  }
   state.Coordinates = c;
   state.Matrix = matrix.value;
+  state.InverseCoordinates = inverseCoordinates.value;
+  state.InverseMatrix = inverse.value;
   this->Modified();
   return true;
 }
@@ -365,39 +367,18 @@ int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double 
 //------------------------------------------------------------------------------
 void vtkLogTransform::Identity()
 {
-  this->Internal->Coordinates.setZero();
-  this->Internal->Matrix.setIdentity();
-  this->Internal->HasInverse = false;
+  *this->Internal = State();
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
 void vtkLogTransform::Inverse()
 {
+  // The inverse state was computed, and found representable, when this state was committed.
   State& s = *this->Internal;
-  if (s.HasInverse)
-  {
-    std::swap(s.Coordinates, s.InverseCoordinates);
-    std::swap(s.Matrix, s.InverseMatrix);
-    this->Modified();
-    return;
-  }
-  if (this->Parametrisation == MATRIX_LOG)
-  {
-    // The principal log of M^-1 is -log M.
-    const lct::LogCoords negated = -s.Coordinates;
-    this->Commit(negated.data(), this->Parametrisation, "Inverse", true);
-    return;
-  }
-  // Polar: psi(M^-1) != -psi(M) unless the factors commute, but it has a closed form that keeps
-  // the winding of the rotation exactly: (-A^-1 l, -w, -U Y U^T).
-  const auto c = lct::polarInverse(s.Coordinates);
-  if (!c)
-  {
-    vtkErrorMacro(<< "Inverse: " << lct::describe(c.status) << "; unchanged.");
-    return;
-  }
-  this->Commit(c.value.data(), this->Parametrisation, "Inverse", true);
+  std::swap(s.Coordinates, s.InverseCoordinates);
+  std::swap(s.Matrix, s.InverseMatrix);
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------

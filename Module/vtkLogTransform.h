@@ -145,9 +145,10 @@ public:
   void Identity();
 
   /**
-   * Invert in place. Exact negation of the coordinates for MatrixLog; for Polar the
-   * coordinates of the inverse map are recomputed (with the rotation branch kept). Inverting
-   * twice restores the state exactly (the inverted state is remembered).
+   * Invert in place. Exact negation of the coordinates for MatrixLog; for Polar the closed form
+   * of the inverse map's coordinates (the rotation branch kept). Never fails: the inverse state
+   * is computed, and a state whose inverse is not representable refused, when a state is set,
+   * so Inverse() swaps the two and inverting twice restores the state exactly.
    */
   void Inverse() override;
 
@@ -173,11 +174,10 @@ private:
   void operator=(const vtkLogTransform&) = delete;
 
   int SetMatrixNear(const double elements[16], const double* referenceCoordinates);
-  /// `inverseHeld`: the inverse of the new state is the current one (Inverse()), finite by
-  /// construction, so it is not recomputed from the new matrix (whose own round-off, amplified
-  /// by the condition number, could overflow there).
-  bool Commit(
-    const double* coordinates, int parametrisation, const char* caller, bool inverseHeld = false);
+  /// Sets the state to `coordinates` in `parametrisation`, with its matrix and its inverse (see
+  /// Inverse()); false, with an error naming `caller` and the state unchanged, when either is
+  /// not representable.
+  bool Commit(const double* coordinates, int parametrisation, const char* caller);
 
   struct State;
   State* Internal;

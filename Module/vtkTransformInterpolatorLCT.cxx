@@ -19,6 +19,8 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkTransformInterpolatorLCT);
@@ -61,12 +63,91 @@ lct::CurveScheme toScheme(int type)
       return lct::CurveScheme::CatmullRom;
   }
 }
+
+const char* typeName(int type)
+{
+  static const char* const names[] = { "Linear", "Spline", "BSpline", "Subdivision", "Bezier" };
+  return names[std::clamp(type, 0, 4)];
+}
+
+/// A point of the curve's key-and-control sequence (the keys, and for Bezier the control
+/// transforms beside them), as a message names it.
+struct Point
+{
+  enum Role
+  {
+    KEY,
+    INCOMING, ///< the Bezier control before the key
+    OUTGOING  ///< the Bezier control after the key
+  };
+  Role Kind = KEY;
+  double Time = 0.0;
+};
+
+std::ostream& operator<<(std::ostream& os, const Point& p)
+{
+  return os << (p.Kind == Point::KEY           ? "the key"
+                   : p.Kind == Point::INCOMING ? "the control transform before the key"
+                                               : "the control transform after the key")
+            << " at t = " << lct::formatNumber(p.Time);
+}
+
+/// A log that a curve point needs and that does not exist (an edit or a setting that would
+/// leave it missing is refused), and why.
+struct Refusal
+{
+  enum Kinds
+  {
+    RELATIVE, ///< log(Reference^-1 Key)
+    ABSOLUTE, ///< the absolute log of Key (ConsistentRotation)
+    TANGENT,  ///< the automatic Bezier control beside Reference needs log(Reference^-1 Key)
+    CONTROL   ///< the automatic Bezier control beside Reference is not representable
+  };
+  lct::Status Status = lct::Status::Ok;
+  Kinds Kind = RELATIVE;
+  Point Key;
+  Point Reference;
+};
+
+/// Writes why `r` is refused, naming its points, the parametrisation in use and, only for a
+/// MatrixLog failure that Polar would not have, the advice to switch.
+std::string describe(const Refusal& r, lct::Parametrisation p, int type)
+{
+  std::ostringstream os;
+  switch (r.Kind)
+  {
+    case Refusal::RELATIVE:
+      os << "the " << typeName(type) << " curve combines " << r.Key << " with " << r.Reference
+         << " as its reference, but the step from " << r.Reference << " to " << r.Key << " has no "
+         << lct::name(p) << " logarithm: ";
+      break;
+    case Refusal::ABSOLUTE:
+      os << "ConsistentRotation combines the absolute " << lct::name(p)
+         << " logarithm of every key, and " << r.Key << " has none: ";
+      break;
+    case Refusal::TANGENT:
+      os << "the automatic Bezier controls beside " << r.Reference << " need the step from it to "
+         << r.Key << ", which has no " << lct::name(p) << " logarithm: ";
+      break;
+    case Refusal::CONTROL:
+      os << "an automatic Bezier control beside " << r.Reference << " is not representable: ";
+      break;
+  }
+  os << lct::describe(r.Status) << lct::adviceFor(r.Status, p);
+  return os.str();
+}
 } // namespace
 
 /// The keys, and the logs derived from them. Edits change the keys in O(log n) and mark the logs
 /// stale (an append or a replacement updates them in place when they are current); the first
 /// evaluation after that rebuilds them in O(n), under a mutex, so that evaluations may run
 /// concurrently once the keys stop changing.
+///
+/// Every edit and every setting is checked first (Add, Remove, SetControls, Validate): every log
+/// that a curve point of the interpolation type may combine must exist (lct::CurveNeeds), so the
+/// rebuilds, which compute the same logs, cannot fail and evaluations never miss a log. An edit
+/// checks only the keys within the stencil of the change (a window of a few keys around it),
+/// from the logs in place when they are current, else by computing the logs it adds.
 struct vtkTransformInterpolatorLCT::Internals
 {
   lct::Keyframes<Key> Keys;
@@ -87,91 +168,155 @@ struct vtkTransformInterpolatorLCT::Internals
   /// Whether a query outside the key range has been reported (once per interpolator).
   std::atomic<bool> ClampReported{ false };
 
+  /// The logs the key logs must hold for curve points of `type`: Bezier takes the steps between
+  /// neighbours both ways (the tangents of its automatic controls; its own sequence is checked
+  /// by CheckBezier).
+  static lct::CurveNeeds KeyNeeds(int type, bool absolute)
+  {
+    const lct::CurveScheme scheme = toScheme(type);
+    if (scheme == lct::CurveScheme::Bezier)
+    {
+      return { lct::CurveScheme::Linear, false };
+    }
+    return { scheme, absolute };
+  }
+
   void KeysChanged(bool logsCurrent)
   {
     this->LogsCurrent = logsCurrent;
     this->BezierCurrent = false;
   }
 
+  /// All keys in time order, for code shared with Window.
+  std::vector<const Key*> FlatKeys()
+  {
+    this->Keys.flatten();
+    std::vector<const Key*> keys(this->Keys.size());
+    for (size_t i = 0; i < keys.size(); ++i)
+    {
+      keys[i] = &this->Keys[i];
+    }
+    return keys;
+  }
+
+  static std::vector<Eigen::Matrix4d> MatricesOf(const std::vector<const Key*>& keys)
+  {
+    std::vector<Eigen::Matrix4d> matrices;
+    matrices.reserve(keys.size());
+    for (const Key* key : keys)
+    {
+      matrices.push_back(key->Matrix);
+    }
+    return matrices;
+  }
+
   /// The key logs, rebuilt if stale. Null, with LogsStatus saying why, when they cannot be.
   const lct::KeyLogs* Logs()
   {
     lct::rebuildOnce(this->LogsCurrent, this->Mutex, [this] {
-      this->Keys.flatten();
-      std::vector<Eigen::Matrix4d> matrices;
-      matrices.reserve(this->Keys.size());
-      for (size_t i = 0; i < this->Keys.size(); ++i)
-      {
-        matrices.push_back(this->Keys[i].Matrix);
-      }
+      const std::vector<const Key*> keys = this->FlatKeys();
       int failed = 0;
-      this->LogsStatus = this->KeyLogs.build(matrices, this->P, true, &failed);
-      this->LogsFailedTime = this->LogsStatus == lct::Status::Ok ? 0.0 : this->Keys[failed].Time;
+      this->LogsStatus = this->KeyLogs.build(MatricesOf(keys), this->P, true, &failed);
+      this->LogsFailedTime = this->LogsStatus == lct::Status::Ok ? 0.0 : keys[failed]->Time;
     });
     return this->LogsStatus == lct::Status::Ok ? &this->KeyLogs : nullptr;
   }
 
-  /// The Bezier sequence: given control transforms, else automatic ones that put the
-  /// Catmull-Rom tangent m of the logs relative to the key (in its frame) at each key:
-  /// C+ = K exp(+h/3 m), C- = K exp(-h/3 m), with h the segment's duration.
-  lct::Status BezierSequence(
-    const lct::KeyLogs& logs, std::vector<Eigen::Matrix4d>& out, int& failedKey) const
+  /// The Bezier key-and-control points of segments firstSegment..lastSegment of `keys` (in time
+  /// order; `reachesFirst` / `reachesLast`: whether they include the first / last key of the
+  /// interpolator), points 3 firstSegment .. 3 lastSegment + 3 of the sequence. Given control
+  /// transforms, else automatic ones that put the Catmull-Rom tangent m of the logs relative to
+  /// the key (in its frame) at each key: C+ = K exp(+h/3 m), C- = K exp(-h/3 m), with h the
+  /// segment's duration. `step(i, r)` gives log(K_r^-1 K_i) as a Result (0 for i == r).
+  template <typename Step>
+  static bool BezierPoints(const std::vector<const Key*>& keys, int firstSegment, int lastSegment,
+    bool reachesFirst, bool reachesLast, lct::Parametrisation p, Step&& step,
+    std::vector<Eigen::Matrix4d>& out, Refusal& refusal)
   {
-    const int n = static_cast<int>(this->Keys.size());
+    const int n = static_cast<int>(keys.size());
     out.clear();
     auto automatic = [&](int k, double signedThird, Eigen::Matrix4d& control) {
-      failedKey = k;
-      const int lo = std::max(k - 1, 0);
-      const int hi = std::min(k + 1, n - 1);
-      const lct::LogCoords* forward = logs.relative(hi, k);
-      const lct::LogCoords* backward = logs.relative(lo, k);
-      if (!forward || !backward)
+      const int lo = (k == 0 && reachesFirst) ? k : k - 1;
+      const int hi = (k == n - 1 && reachesLast) ? k : k + 1;
+      const lct::Result<lct::LogCoords> logs[2] = { step(hi, k), step(lo, k) };
+      for (int side = 0; side < 2; ++side)
       {
-        return !forward ? logs.relativeStatus(hi, k) : logs.relativeStatus(lo, k);
+        if (!logs[side])
+        {
+          refusal = Refusal{ logs[side].status, Refusal::TANGENT,
+            Point{ Point::KEY, keys[side == 0 ? hi : lo]->Time },
+            Point{ Point::KEY, keys[k]->Time } };
+          return false;
+        }
       }
       const lct::LogCoords tangent =
-        (*forward - *backward) / (this->Keys.times()[hi] - this->Keys.times()[lo]);
-      const auto c = lct::exponential(signedThird * tangent, this->P);
-      if (!c)
+        (logs[0].value - logs[1].value) / (keys[hi]->Time - keys[lo]->Time);
+      const auto c = lct::exponential(signedThird * tangent, p);
+      if (c)
       {
-        return c.status;
+        control = keys[k]->Matrix * c.value;
       }
-      control = this->Keys[k].Matrix * c.value;
-      return control.allFinite() ? lct::Status::Ok : lct::Status::OutOfRange;
+      const lct::Status status =
+        !c ? c.status : (control.allFinite() ? lct::Status::Ok : lct::Status::OutOfRange);
+      if (status != lct::Status::Ok)
+      {
+        refusal = Refusal{ status, Refusal::CONTROL, Point{}, Point{ Point::KEY, keys[k]->Time } };
+        return false;
+      }
+      return true;
     };
-    for (int k = 0; k < n; ++k)
+    if (n == 1)
     {
-      const Key& key = this->Keys[k];
-      Eigen::Matrix4d control;
-      if (k > 0)
-      {
-        if (!key.HasIncoming)
-        {
-          const lct::Status status =
-            automatic(k, -(this->Keys[k].Time - this->Keys[k - 1].Time) / 3.0, control);
-          if (status != lct::Status::Ok)
-          {
-            return status;
-          }
-        }
-        out.push_back(key.HasIncoming ? key.Incoming : control);
-      }
-      out.push_back(key.Matrix);
-      if (k + 1 < n)
-      {
-        if (!key.HasOutgoing)
-        {
-          const lct::Status status =
-            automatic(k, (this->Keys[k + 1].Time - this->Keys[k].Time) / 3.0, control);
-          if (status != lct::Status::Ok)
-          {
-            return status;
-          }
-        }
-        out.push_back(key.HasOutgoing ? key.Outgoing : control);
-      }
+      out.push_back(keys[0]->Matrix);
+      return true;
     }
-    return lct::Status::Ok;
+    for (int s = firstSegment; s <= lastSegment; ++s)
+    {
+      const Key& from = *keys[s];
+      const Key& to = *keys[s + 1];
+      const double third = (to.Time - from.Time) / 3.0;
+      Eigen::Matrix4d outgoing = from.Outgoing;
+      Eigen::Matrix4d incoming = to.Incoming;
+      if ((!from.HasOutgoing && !automatic(s, third, outgoing)) ||
+        (!to.HasIncoming && !automatic(s + 1, -third, incoming)))
+      {
+        return false;
+      }
+      if (s == firstSegment)
+      {
+        out.push_back(from.Matrix);
+      }
+      out.push_back(outgoing);
+      out.push_back(incoming);
+      out.push_back(to.Matrix);
+    }
+    return true;
+  }
+
+  /// Point q of the Bezier sequence of `keys`.
+  static Point BezierPoint(const std::vector<const Key*>& keys, int q)
+  {
+    const int k = q / 3;
+    switch (q % 3)
+    {
+      case 0:
+        return Point{ Point::KEY, keys[k]->Time };
+      case 1:
+        return Point{ Point::OUTGOING, keys[k]->Time };
+      default:
+        return Point{ Point::INCOMING, keys[k + 1]->Time };
+    }
+  }
+
+  static Refusal FromMissing(
+    const lct::MissingLog& missing, const std::vector<const Key*>& keys, int offset, bool bezier)
+  {
+    auto point = [&](int j) {
+      return bezier ? BezierPoint(keys, j - offset) : Point{ Point::KEY, keys[j - offset]->Time };
+    };
+    return Refusal{ missing.status,
+      missing.key == missing.reference ? Refusal::ABSOLUTE : Refusal::RELATIVE, point(missing.key),
+      point(missing.reference) };
   }
 
   /// The Bezier logs, built if the keys changed since. Null, with BezierStatus saying why, when
@@ -186,108 +331,204 @@ struct vtkTransformInterpolatorLCT::Internals
       return nullptr;
     }
     lct::rebuildOnce(this->BezierCurrent, this->Mutex, [this, logs] {
+      const std::vector<const Key*> keys = this->FlatKeys();
       std::vector<Eigen::Matrix4d> sequence;
+      Refusal refusal;
       int failed = 0;
-      this->BezierStatus = this->BezierSequence(*logs, sequence, failed);
-      if (this->BezierStatus == lct::Status::Ok)
-      {
-        this->BezierStatus = this->BezierLogs.build(sequence, this->P, false, &failed);
-        failed = (failed + 1) / 3;
-      }
-      this->BezierFailedTime =
-        this->Keys.empty() ? 0.0 : this->Keys[std::min<size_t>(failed, this->Keys.size() - 1)].Time;
+      this->BezierStatus = BezierSequence(*logs, keys, sequence, refusal)
+        ? this->BezierLogs.build(sequence, this->P, false, &failed)
+        : refusal.Status;
+      this->BezierFailedTime = keys.empty() ? 0.0
+        : this->BezierStatus == lct::Status::Ok
+        ? 0.0
+        : keys[std::min<size_t>((failed + 1) / 3, keys.size() - 1)]->Time;
     });
     return this->BezierStatus == lct::Status::Ok ? &this->BezierLogs : nullptr;
   }
 
-  /// Why a step from `from` to `to` cannot be interpolated in P, or Ok.
-  lct::Status StepStatus(const Eigen::Matrix4d& from, const Eigen::Matrix4d& to) const
+  /// The whole Bezier sequence, its tangents from the key logs (in their parametrisation).
+  static bool BezierSequence(const lct::KeyLogs& logs, const std::vector<const Key*>& keys,
+    std::vector<Eigen::Matrix4d>& sequence, Refusal& refusal)
   {
-    const Eigen::Matrix4d step = lct::relativeStep(from, to);
-    if (!step.allFinite())
-    {
-      return lct::Status::OutOfRange;
-    }
-    return lct::logarithm(step, this->P).status;
+    auto step = [&logs](int i, int r) {
+      const lct::LogCoords* l = logs.relative(i, r);
+      return l ? lct::Result<lct::LogCoords>{ *l, lct::Status::Ok }
+               : lct::Result<lct::LogCoords>::failure(logs.relativeStatus(i, r));
+    };
+    return BezierPoints(keys, 0, static_cast<int>(keys.size()) - 2, true, true,
+      logs.parametrisation(), step, sequence, refusal);
   }
 
-  /// Adds or replaces (same time) a key whose own validity was checked; `neighbourTime`
-  /// receives the time of a neighbour the key cannot be joined to. On failure nothing changes.
-  lct::Status Add(const Key& key, double& neighbourTime)
+  using Window = lct::KeyWindow<Key>;
+
+  /// The logs on the keys of the window that an edit adds (of the edited key, or for a removal
+  /// those across it), computed here for stale logs.
+  bool CheckKeys(
+    const Window& w, const lct::CurveNeeds& needs, bool removal, Refusal& refusal) const
   {
-    for (const Key* neighbour : { this->Keys.before(key.Time), this->Keys.after(key.Time) })
+    const lct::MissingLog missing = lct::missingAfterEdit(
+      w, removal, [](const Key& key) { return key.Matrix; }, this->P, needs, needs.absolute);
+    if (missing.missing())
     {
-      if (neighbour)
-      {
-        const lct::Status step = neighbour->Time < key.Time
-          ? this->StepStatus(neighbour->Matrix, key.Matrix)
-          : this->StepStatus(key.Matrix, neighbour->Matrix);
-        if (step != lct::Status::Ok)
-        {
-          neighbourTime = neighbour->Time;
-          return step;
-        }
-      }
+      refusal = FromMissing(missing, w.keys, 0, false);
+      return false;
+    }
+    return true;
+  }
+
+  /// The Bezier sequence of segments firstSegment..lastSegment of the window and every log its
+  /// curve points combine, computed here (each edit changes automatic controls up to two keys
+  /// away).
+  bool CheckBezier(
+    const Window& w, int firstSegment, int lastSegment, bool absolute, Refusal& refusal) const
+  {
+    const int m = static_cast<int>(w.keys.size());
+    firstSegment = std::max(firstSegment, 0);
+    // A single key is a sequence of one point (whose absolute log ConsistentRotation combines).
+    lastSegment = std::min(lastSegment, lct::curveSegments(m) - 1);
+    if (m == 0 || firstSegment > lastSegment)
+    {
+      return true;
+    }
+    auto step = [&](int i, int r) {
+      return i == r ? lct::Result<lct::LogCoords>{ lct::LogCoords::Zero(), lct::Status::Ok }
+                    : lct::KeyLogs::relativeLog(w.keys[r]->Matrix, w.keys[i]->Matrix, this->P);
+    };
+    std::vector<Eigen::Matrix4d> points;
+    if (!BezierPoints(w.keys, firstSegment, lastSegment, w.reachesFirst, w.reachesLast, this->P,
+          step, points, refusal))
+    {
+      return false;
+    }
+    const lct::MissingLog missing = lct::KeyLogs::missingLog(points, 3 * firstSegment, m, this->P,
+      { lct::CurveScheme::Bezier, absolute }, firstSegment, lastSegment);
+    if (missing.missing())
+    {
+      refusal = FromMissing(missing, w.keys, 0, true);
+      return false;
+    }
+    return true;
+  }
+
+  /// Adds or replaces (same time) a key whose own validity was checked, for curve points of
+  /// `type`. On failure nothing changes and `refusal` says which log would be missing.
+  bool Add(const Key& key, int type, bool absolute, Refusal& refusal)
+  {
+    const lct::CurveNeeds needs = KeyNeeds(type, absolute);
+    const Window window = lct::keyWindow(this->Keys, key.Time, &key);
+    if (toScheme(type) == lct::CurveScheme::Bezier &&
+      !this->CheckBezier(window, window.edited - 2, window.edited + 1, absolute, refusal))
+    {
+      return false;
     }
     const bool replaces = this->Keys.find(key.Time) != nullptr;
     const bool append = this->Keys.isAppend(key.Time);
-    bool logsCurrent = false;
-    // An append or a replacement updates current logs in place (O(1) logs); anything else
-    // leaves them to the next evaluation's rebuild.
-    if (this->LogsCurrent && this->LogsStatus == lct::Status::Ok && (append || replaces))
+    // An append or a replacement updates current logs in place (O(1) logs), which checks them
+    // too; anything else computes the logs it adds, and leaves the rest to the next
+    // evaluation's rebuild.
+    const bool inPlace =
+      this->LogsCurrent && this->LogsStatus == lct::Status::Ok && (append || replaces);
+    if (inPlace)
     {
       this->Keys.flatten();
       const int index = replaces ? this->Keys.index(key.Time) : static_cast<int>(this->Keys.size());
-      logsCurrent = (replaces ? this->KeyLogs.replace(index, key.Matrix, true)
-                              : this->KeyLogs.insert(index, key.Matrix, true)) == lct::Status::Ok;
+      lct::MissingLog missing;
+      const lct::Status status = replaces
+        ? this->KeyLogs.replace(index, key.Matrix, true, needs, &missing)
+        : this->KeyLogs.insert(index, key.Matrix, true, needs, &missing);
+      if (status != lct::Status::Ok)
+      {
+        refusal = FromMissing(missing, window.keys, index - window.edited, false);
+        return false;
+      }
+    }
+    else if (!this->CheckKeys(window, needs, false, refusal))
+    {
+      return false;
     }
     this->Keys.set(key);
-    this->KeysChanged(logsCurrent);
-    return lct::Status::Ok;
+    this->KeysChanged(inPlace);
+    return true;
   }
 
-  /// Removes the key at time t. Fails (nothing changes) when its neighbours cannot be joined.
-  lct::Status Remove(double t)
+  /// Removes the key at time t. Fails (nothing changes) when the keys it leaves would miss a log
+  /// that curve points of `type` combine.
+  bool Remove(double t, int type, bool absolute, Refusal& refusal)
   {
-    const Key* before = this->Keys.before(t);
-    const Key* after = this->Keys.after(t);
-    if (before && after)
+    const Window window = lct::keyWindow(this->Keys, t, static_cast<const Key*>(nullptr));
+    if (!this->CheckKeys(window, KeyNeeds(type, absolute), true, refusal) ||
+      (toScheme(type) == lct::CurveScheme::Bezier &&
+        !this->CheckBezier(window, window.edited - 2, window.edited, absolute, refusal)))
     {
-      const lct::Status step = this->StepStatus(before->Matrix, after->Matrix);
-      if (step != lct::Status::Ok)
-      {
-        return step;
-      }
+      return false;
     }
     this->Keys.erase(t);
     this->KeysChanged(false);
-    return lct::Status::Ok;
+    return true;
   }
 
-  /// Recomputes every log in parametrisation p. On failure nothing changes.
-  lct::Status Rebuild(lct::Parametrisation p, double& failedTime)
+  /// Whether the Bezier controls of `key` (the key at its time, with new controls) keep every
+  /// log of the two segments beside it.
+  bool SetControls(const Key& key, bool absolute, Refusal& refusal) const
+  {
+    const Window window = lct::keyWindow(this->Keys, key.Time, &key);
+    return this->CheckBezier(window, window.edited - 1, window.edited, absolute, refusal);
+  }
+
+  /// Checks every log that curve points of `type` combine in parametrisation p (recomputing the
+  /// logs unless they are current in p) and makes p current. On failure nothing changes.
+  bool Validate(lct::Parametrisation p, int type, bool absolute, Refusal& refusal)
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    this->Keys.flatten();
-    std::vector<Eigen::Matrix4d> matrices;
-    for (size_t i = 0; i < this->Keys.size(); ++i)
+    const std::vector<const Key*> keys = this->FlatKeys();
+    const lct::CurveNeeds needs = KeyNeeds(type, absolute);
+    const bool current = p == this->P && this->LogsCurrent && this->LogsStatus == lct::Status::Ok;
+    lct::KeyLogs rebuilt;
+    lct::MissingLog missing;
+    if (current)
     {
-      matrices.push_back(this->Keys[i].Matrix);
+      missing = this->KeyLogs.missingLog(needs);
     }
-    int failed = 0;
-    lct::KeyLogs logs;
-    const lct::Status status = logs.build(matrices, p, true, &failed);
-    if (status != lct::Status::Ok)
+    else
     {
-      failedTime = this->Keys[failed].Time;
-      return status;
+      rebuilt.build(MatricesOf(keys), p, true, needs, &missing);
     }
-    this->KeyLogs = std::move(logs);
-    this->P = p;
-    this->LogsStatus = lct::Status::Ok;
-    this->LogsCurrent = true;
-    this->BezierCurrent = false;
-    return lct::Status::Ok;
+    if (missing.missing())
+    {
+      refusal = FromMissing(missing, keys, 0, false);
+      return false;
+    }
+    const lct::KeyLogs& logs = current ? this->KeyLogs : rebuilt;
+    lct::KeyLogs bezier;
+    const bool isBezier = toScheme(type) == lct::CurveScheme::Bezier;
+    if (isBezier)
+    {
+      std::vector<Eigen::Matrix4d> sequence;
+      if (!BezierSequence(logs, keys, sequence, refusal))
+      {
+        return false;
+      }
+      bezier.build(sequence, p, false, { lct::CurveScheme::Bezier, absolute }, &missing);
+      if (missing.missing())
+      {
+        refusal = FromMissing(missing, keys, 0, true);
+        return false;
+      }
+    }
+    if (!current)
+    {
+      this->KeyLogs = std::move(rebuilt);
+      this->P = p;
+      this->LogsStatus = lct::Status::Ok;
+      this->LogsCurrent = true;
+    }
+    if (isBezier)
+    {
+      this->BezierLogs = std::move(bezier);
+      this->BezierStatus = lct::Status::Ok;
+    }
+    this->BezierCurrent = isBezier;
+    return true;
   }
 };
 
@@ -351,7 +592,8 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
   key.Matrix = RowMajor4(Eigen::Map<const RowMajor4>(elements));
   // Each key on its own first, so that a bad key is named as the cause (and never a good
   // neighbour after it): finite, affine, det > 0, and within the conditioning and range of the
-  // core. MatrixLog keys need no absolute log: only their steps to the neighbours must have one.
+  // core. Then the logs the curve combines (Internals::Add): MatrixLog keys need an absolute log
+  // only with ConsistentRotation.
   const lct::Status own = lct::polarLog(key.Matrix).status;
   if (own != lct::Status::Ok)
   {
@@ -360,15 +602,11 @@ int vtkTransformInterpolatorLCT::AddKey(double t, const double elements[16], con
     return 0;
   }
   // A key at an existing time replaces it, as vtkTransformInterpolator does.
-  double neighbourTime = 0.0;
-  const lct::Status added = this->Internal->Add(key, neighbourTime);
-  if (added != lct::Status::Ok)
+  Refusal refusal;
+  if (!this->Internal->Add(key, this->InterpolationType, this->ConsistentRotation != 0, refusal))
   {
-    const lct::Parametrisation p = this->Internal->P;
-    vtkErrorMacro(<< caller << " at t = " << lct::formatNumber(t)
-                  << ": the step between this key and the key at t = "
-                  << lct::formatNumber(neighbourTime) << " has no " << lct::name(p)
-                  << " logarithm: " << lct::describe(added) << lct::adviceFor(added, p)
+    vtkErrorMacro(<< caller << " at t = " << lct::formatNumber(t) << ": "
+                  << describe(refusal, this->Internal->P, this->InterpolationType)
                   << "; key rejected.");
     return 0;
   }
@@ -432,41 +670,52 @@ int vtkTransformInterpolatorLCT::SetBezierControls(
       return 0;
     }
   }
-  key->HasIncoming = incoming != nullptr;
-  key->HasOutgoing = outgoing != nullptr;
+  Key changed = *key;
+  changed.HasIncoming = incoming != nullptr;
+  changed.HasOutgoing = outgoing != nullptr;
   if (incoming)
   {
-    key->Incoming = RowMajor4(Eigen::Map<const RowMajor4>(incoming->GetData()));
+    changed.Incoming = RowMajor4(Eigen::Map<const RowMajor4>(incoming->GetData()));
   }
   if (outgoing)
   {
-    key->Outgoing = RowMajor4(Eigen::Map<const RowMajor4>(outgoing->GetData()));
+    changed.Outgoing = RowMajor4(Eigen::Map<const RowMajor4>(outgoing->GetData()));
   }
+  // Only a Bezier curve uses the controls (SetInterpolationType checks them when it switches).
+  Refusal refusal;
+  if (this->InterpolationType == INTERPOLATION_TYPE_BEZIER &&
+    !this->Internal->SetControls(changed, this->ConsistentRotation != 0, refusal))
+  {
+    vtkErrorMacro(<< "SetBezierControls(t = " << lct::formatNumber(t)
+                  << "): " << describe(refusal, this->Internal->P, this->InterpolationType)
+                  << "; unchanged.");
+    return 0;
+  }
+  *key = changed;
   this->Internal->BezierCurrent = false;
   this->Modified();
   return 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkTransformInterpolatorLCT::RemoveTransform(double t)
+int vtkTransformInterpolatorLCT::RemoveTransform(double t)
 {
   if (!this->Internal->Keys.find(t))
   {
-    return;
+    return 1;
   }
-  // Removing a key makes its two neighbours adjacent: in MatrixLog (or for steps beyond the
-  // conditioning limit) they may not be joinable, so check.
-  const lct::Status removed = this->Internal->Remove(t);
-  if (removed != lct::Status::Ok)
+  // Removing a key brings the keys on either side of it closer: they may then share curve
+  // points whose logs do not exist (in MatrixLog, or for steps beyond the conditioning limit).
+  Refusal refusal;
+  if (!this->Internal->Remove(t, this->InterpolationType, this->ConsistentRotation != 0, refusal))
   {
-    const lct::Parametrisation p = this->Internal->P;
-    vtkErrorMacro(<< "RemoveTransform(" << lct::formatNumber(t)
-                  << "): its two neighbours would be joined by a step without a " << lct::name(p)
-                  << " logarithm: " << lct::describe(removed) << lct::adviceFor(removed, p)
+    vtkErrorMacro(<< "RemoveTransform(" << lct::formatNumber(t) << "): without this key, "
+                  << describe(refusal, this->Internal->P, this->InterpolationType)
                   << "; not removed.");
-    return;
+    return 0;
   }
   this->Modified();
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -482,17 +731,58 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
   {
     return 1;
   }
-  double failedTime = 0.0;
   const lct::Parametrisation p = toCore(parametrisation);
-  const lct::Status built = this->Internal->Rebuild(p, failedTime);
-  if (built != lct::Status::Ok)
+  Refusal refusal;
+  if (!this->Internal->Validate(p, this->InterpolationType, this->ConsistentRotation != 0, refusal))
   {
-    vtkErrorMacro(<< "SetParametrisation: the step to the key at t = "
-                  << lct::formatNumber(failedTime) << " has no " << lct::name(p)
-                  << " logarithm: " << lct::describe(built) << "; unchanged.");
+    vtkErrorMacro(<< "SetParametrisation(" << lct::name(p)
+                  << "): " << describe(refusal, p, this->InterpolationType) << "; unchanged.");
     return 0;
   }
   this->Parametrisation = parametrisation;
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetInterpolationType(int type)
+{
+  type = std::clamp(
+    type, static_cast<int>(INTERPOLATION_TYPE_LINEAR), static_cast<int>(INTERPOLATION_TYPE_BEZIER));
+  if (type == this->InterpolationType)
+  {
+    return 1;
+  }
+  Refusal refusal;
+  if (!this->Internal->Validate(this->Internal->P, type, this->ConsistentRotation != 0, refusal))
+  {
+    vtkErrorMacro(<< "SetInterpolationType(" << typeName(type)
+                  << "): " << describe(refusal, this->Internal->P, type) << "; unchanged.");
+    return 0;
+  }
+  this->InterpolationType = type;
+  this->Modified();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetConsistentRotation(vtkTypeBool consistentRotation)
+{
+  if (consistentRotation == this->ConsistentRotation)
+  {
+    return 1;
+  }
+  Refusal refusal;
+  if ((consistentRotation != 0) != (this->ConsistentRotation != 0) &&
+    !this->Internal->Validate(
+      this->Internal->P, this->InterpolationType, consistentRotation != 0, refusal))
+  {
+    vtkErrorMacro(<< "SetConsistentRotation(" << (consistentRotation ? "on" : "off")
+                  << "): " << describe(refusal, this->Internal->P, this->InterpolationType)
+                  << "; unchanged.");
+    return 0;
+  }
+  this->ConsistentRotation = consistentRotation;
   this->Modified();
   return 1;
 }
@@ -539,8 +829,21 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
   }
   const lct::CurveWeights w = lct::curveWeights(scheme, in.Keys.times().data(), n, t);
   Eigen::Matrix4d result;
-  const lct::Status status =
-    this->ConsistentRotation ? logs->combineAbsolute(w, result) : logs->combineRelative(w, result);
+  lct::MissingLog missing;
+  const lct::Status status = this->ConsistentRotation ? logs->combineAbsolute(w, result, &missing)
+                                                      : logs->combineRelative(w, result, &missing);
+  if (missing.missing())
+  {
+    // Every edit and setting checks the logs its curve points combine, so this is a defect.
+    const std::vector<const Key*> keys = in.FlatKeys();
+    vtkErrorMacro(<< "InterpolateTransform(" << lct::formatNumber(t) << "): "
+                  << describe(
+                       Internals::FromMissing(missing, keys, 0, scheme == lct::CurveScheme::Bezier),
+                       in.P, this->InterpolationType)
+                  << " (a defect of vtkLCT: the keys should have been refused; please report "
+                     "them); output unchanged.");
+    return false;
+  }
   if (status != lct::Status::Ok)
   {
     vtkErrorMacro(<< "InterpolateTransform(" << lct::formatNumber(t) << "): "

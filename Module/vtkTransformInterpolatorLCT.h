@@ -33,16 +33,26 @@
  *
  * Keys are copied when added; an AddTransform at an existing time replaces that key (as VTK
  * does). Each key is validated on its own (finite, affine, det > 0, condition number up to 1e13,
- * no subnormal stretch; lct/Conditioning.h) and its steps to its neighbours must have a logarithm
- * in the parametrisation; a key failing either is rejected with a vtkErrorMacro naming the cause
- * and leaves the interpolator unchanged (AddTransform returns 0, else 1). Loading n keys in any
- * order costs O(n log n); the key logs are computed once, by the first InterpolateTransform
- * after the keys changed (appends and replacements update them in place).
+ * no subnormal stretch; lct/Conditioning.h), and then against the curve: every logarithm that a
+ * curve point of the interpolation type may combine must exist in the parametrisation — the step
+ * from each key a point weights to each key that can be its reference, up to three keys apart
+ * (lct::curveStencil; Linear: the neighbours both ways), with ConsistentRotation the absolute
+ * log of each key (and the steps to the neighbours), for Bezier also the logs between the keys
+ * and control transforms of each segment. A key failing either is rejected with a vtkErrorMacro
+ * naming the keys and the cause, and leaves the interpolator unchanged (AddTransform returns 0,
+ * else 1). The same holds for every call that changes which logs are needed (RemoveTransform,
+ * SetBezierControls, SetInterpolationType, SetParametrisation, SetConsistentRotation): it is
+ * refused, with the keys named, and changes nothing. So InterpolateTransform never fails inside
+ * the key range for a missing logarithm. Only the keys near the change are checked: loading n
+ * keys in any order costs O(n log n); the key logs are computed once, by the first
+ * InterpolateTransform after the keys changed (appends and replacements update them in place;
+ * the setters compute them at once).
  *
  * InterpolateTransform clamps a finite t to [GetMinimumT(), GetMaximumT()] like VTK (with one
  * vtkWarningMacro per interpolator, so the clamp is never silent); it returns 0 with an error,
  * leaving the output untouched, when there is no key, t is NaN or infinite, or the result is
- * not representable (e.g. a spline overshoot that overflows): no NaN or Inf is ever written.
+ * not representable (e.g. a spline overshoot that overflows, or an in-between beyond the
+ * conditioning limit): no NaN or Inf is ever written.
  *
  * Concurrency: once the keys and the settings no longer change, InterpolateTransform may be
  * called from several threads at once on one interpolator, each thread with its own output
@@ -97,8 +107,8 @@ public:
    * Add a key at time t (copied). A key at an existing time replaces it. Returns 1 on success,
    * 0 (with an error naming the cause, interpolator unchanged) for a null key, a non-finite t,
    * a key that is non-finite, projective, orientation-reversing, singular or beyond the
-   * conditioning limit, or one whose step to a neighbouring key has no logarithm in the
-   * parametrisation.
+   * conditioning limit, or one with which a curve point would combine a logarithm that does not
+   * exist in the parametrisation (see the class description; the error names both keys).
    */
   int AddTransform(double t, vtkTransform* xform);
   int AddTransform(double t, vtkMatrix4x4* matrix);
@@ -106,10 +116,12 @@ public:
   ///@}
 
   /**
-   * Remove the key at time t (if any). Refused, with an error, when its two neighbours would be
-   * joined by a step without a logarithm in the parametrisation.
+   * Remove the key at time t (if any). Returns 1 when it was removed or there was none; 0, with
+   * an error naming the keys and the key kept, when the keys it leaves would make a curve point
+   * combine a logarithm that does not exist (e.g. its two neighbours joined by a step without
+   * one).
    */
-  void RemoveTransform(double t);
+  int RemoveTransform(double t);
 
   ///@{
   /**
@@ -133,18 +145,35 @@ public:
 
   ///@{
   /**
-   * The curve scheme. Default: Spline, as vtkTransformInterpolator.
+   * The curve scheme. Default: Spline, as vtkTransformInterpolator. A value out of range is
+   * clamped (as vtkSetClampMacro does). Returns 1, or 0 with an error naming the keys (and the
+   * type unchanged) when the keys do not have every logarithm a curve point of the new type
+   * combines (a wider stencil reaches keys farther apart).
    */
-  vtkSetClampMacro(InterpolationType, int, INTERPOLATION_TYPE_LINEAR, INTERPOLATION_TYPE_BEZIER);
+  int SetInterpolationType(int type);
   vtkGetMacro(InterpolationType, int);
-  void SetInterpolationTypeToLinear() { this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR); }
-  void SetInterpolationTypeToSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE); }
-  void SetInterpolationTypeToBSpline() { this->SetInterpolationType(INTERPOLATION_TYPE_BSPLINE); }
-  void SetInterpolationTypeToSubdivision()
+  int GetInterpolationTypeMinValue() { return INTERPOLATION_TYPE_LINEAR; }
+  int GetInterpolationTypeMaxValue() { return INTERPOLATION_TYPE_BEZIER; }
+  int SetInterpolationTypeToLinear()
   {
-    this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
+    return this->SetInterpolationType(INTERPOLATION_TYPE_LINEAR);
   }
-  void SetInterpolationTypeToBezier() { this->SetInterpolationType(INTERPOLATION_TYPE_BEZIER); }
+  int SetInterpolationTypeToSpline()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_SPLINE);
+  }
+  int SetInterpolationTypeToBSpline()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_BSPLINE);
+  }
+  int SetInterpolationTypeToSubdivision()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_SUBDIVISION);
+  }
+  int SetInterpolationTypeToBezier()
+  {
+    return this->SetInterpolationType(INTERPOLATION_TYPE_BEZIER);
+  }
   ///@}
 
   /**
@@ -154,7 +183,9 @@ public:
    * side gets the automatic control exp(+-h/3 m) K, with m the Catmull-Rom tangent of the logs
    * relative to the key and h the segment's duration, so without controls Bezier follows the
    * Spline type closely. Controls are kept until the key is replaced or removed. Returns 0 (with
-   * an error, unchanged) when there is no key at t or a control is not a valid affine map.
+   * an error, unchanged) when there is no key at t, a control is not a valid affine map, or
+   * (type Bezier) a curve point of the two segments beside the key would combine a logarithm
+   * that does not exist.
    */
   int SetBezierControls(double t, vtkMatrix4x4* incoming, vtkMatrix4x4* outgoing);
 
@@ -167,7 +198,8 @@ public:
   ///@{
   /**
    * The parametrisation (see vtkLogTransform). Changing it recomputes the key logs; it returns 0
-   * (with an error, unchanged) if a key has no coordinates in the new one.
+   * (with an error naming the keys, unchanged) if a logarithm that a curve point combines does
+   * not exist in the new one.
    */
   int SetParametrisation(int parametrisation);
   vtkGetMacro(Parametrisation, int);
@@ -178,10 +210,14 @@ public:
   ///@{
   /**
    * Keep the rotation winding of the key sequence (see the class description). Default off.
+   * Returns 1, or 0 with an error naming the key (setting unchanged) when a logarithm the new
+   * setting combines does not exist (MatrixLog: a key without an absolute one; off: a relative
+   * step of the interpolation type).
    */
-  vtkSetMacro(ConsistentRotation, vtkTypeBool);
+  int SetConsistentRotation(vtkTypeBool consistentRotation);
   vtkGetMacro(ConsistentRotation, vtkTypeBool);
-  vtkBooleanMacro(ConsistentRotation, vtkTypeBool);
+  int ConsistentRotationOn() { return this->SetConsistentRotation(1); }
+  int ConsistentRotationOff() { return this->SetConsistentRotation(0); }
   ///@}
 
 protected:

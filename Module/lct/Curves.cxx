@@ -226,4 +226,38 @@ CurveWeights curveWeights(CurveScheme scheme, const double* times, int keyCount,
   return out;
 }
 
+CurveStencil curveStencil(CurveScheme scheme, int keyCount, int segment)
+{
+  CurveStencil out;
+  if (keyCount <= 1)
+  {
+    return out;
+  }
+  const int last = keyCount - 1;
+  auto keys = [&](int below, int above) {
+    out.first = std::max(segment - below, 0);
+    out.last = std::min(segment + above, last);
+    out.firstReference = segment;
+    out.lastReference = segment + 1;
+  };
+  switch (scheme)
+  {
+    case CurveScheme::Linear:
+      keys(0, 1);
+      break;
+    case CurveScheme::CatmullRom:
+    case CurveScheme::BSpline:
+      keys(1, 2);
+      break;
+    case CurveScheme::Subdivision:
+      keys(2, 3);
+      break;
+    case CurveScheme::Bezier:
+      out.first = out.firstReference = 3 * segment;
+      out.last = out.lastReference = 3 * segment + 3;
+      break;
+  }
+  return out;
+}
+
 } // namespace lct

@@ -63,6 +63,64 @@ struct CurveWeights
 VTKLCT_EXPORT CurveWeights curveWeights(
   CurveScheme scheme, const double* times, int keyCount, double t);
 
+/// The number of segments of keyCount keys (1 for a single key).
+inline int curveSegments(int keyCount)
+{
+  return keyCount > 1 ? keyCount - 1 : 1;
+}
+
+/// What the curve points of one segment (times[segment] <= t <= times[segment + 1]) combine,
+/// for any key times: curveWeights lists only keys in [first, last] (some with weight 0), and its
+/// largest weight, and its second largest wherever the two are within 0.1 of each other, are on
+/// keys in [firstReference, lastReference]. These are the keys lct::KeyLogs takes as the
+/// reference of the relative form, so a curve point on the segment needs the relative logs of
+/// keys first..last about each reference (Testing/Unit/TestCurves.cxx checks the bounds).
+/// - Linear: keys segment, segment + 1, both references.
+/// - CatmullRom and BSpline: keys segment - 1 .. segment + 2 (clamped to the keys); the outer
+///   two weigh at most 1/6 (BSpline) or <= 0 (CatmullRom), so the references are segment and
+///   segment + 1.
+/// - Subdivision: keys segment - 2 .. segment + 3 (clamped; phantom keys fold onto the end
+///   keys), references segment and segment + 1 (the outer weights stay below 0.07).
+/// - Bezier: points 3 segment .. 3 segment + 3 of the key-and-control sequence, each of which
+///   can have the largest weight.
+/// With one key: that key alone. Preconditions: keyCount >= 1 and
+/// 0 <= segment < curveSegments(keyCount).
+struct CurveStencil
+{
+  int first = 0;
+  int last = 0;
+  int firstReference = 0;
+  int lastReference = 0;
+};
+VTKLCT_EXPORT CurveStencil curveStencil(CurveScheme scheme, int keyCount, int segment);
+
+/// Calls visit(i, r) for every pair of distinct keys (Bezier: sequence points) that a curve point
+/// on segments firstSegment..lastSegment (clamped to the segments) combines: i in a segment's
+/// stencil, r one of its references, so that its relative log log(M_r^-1 M_i) is needed. A pair
+/// may come more than once (neighbouring segments share keys). Stops, returning false, at the
+/// first visit that returns false.
+template <typename Visit>
+bool forEachCombinedPair(
+  CurveScheme scheme, int keyCount, int firstSegment, int lastSegment, Visit&& visit)
+{
+  const int segments = curveSegments(keyCount);
+  for (int s = firstSegment < 0 ? 0 : firstSegment; s <= lastSegment && s < segments; ++s)
+  {
+    const CurveStencil stencil = curveStencil(scheme, keyCount, s);
+    for (int r = stencil.firstReference; r <= stencil.lastReference; ++r)
+    {
+      for (int i = stencil.first; i <= stencil.last; ++i)
+      {
+        if (i != r && !visit(i, r))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
 } // namespace lct
 
 #endif

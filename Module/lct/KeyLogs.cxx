@@ -6,9 +6,62 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 
 namespace lct
 {
+
+// Every relative log the logs hold or a check computes is this one computation, so that a log
+// a check found is the log the logs hold.
+Result<LogCoords> KeyLogs::relativeLog(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p)
+{
+  const Eigen::Matrix4d step = relativeStep(reference, key);
+  // A step that overflows is out of range, not "NaN or Inf in the input".
+  return step.allFinite() ? logarithm(step, p) : Result<LogCoords>::failure(Status::OutOfRange);
+}
+
+namespace
+{
+/// The number of keys of `points` curve points (Bezier: the keys of a key-and-control sequence
+/// of 3 (n - 1) + 1 points).
+int curveKeys(CurveScheme scheme, int points)
+{
+  return scheme == CurveScheme::Bezier ? (points + 2) / 3 : points;
+}
+
+/// The segments whose curve points may combine a log that an edit at point `index` adds.
+void segmentsNear(CurveScheme scheme, int index, int& first, int& last)
+{
+  if (scheme == CurveScheme::Bezier)
+  {
+    first = (index - 1) / 3 - 1;
+    last = index / 3 + 1;
+    return;
+  }
+  first = index - KeyLogs::kStencilReach - 1;
+  last = index + KeyLogs::kStencilReach;
+}
+
+/// Calls visit(j) for every point that a curve point on segments first..last combines.
+template <typename Visit>
+bool forEachCombinedPoint(CurveScheme scheme, int keyCount, int first, int last, Visit&& visit)
+{
+  const int segments = curveSegments(keyCount);
+  for (int s = std::max(first, 0); s <= last && s < segments; ++s)
+  {
+    const CurveStencil stencil = curveStencil(scheme, keyCount, s);
+    for (int j = stencil.first; j <= stencil.last; ++j)
+    {
+      if (!visit(j))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+} // namespace
 
 void KeyLogs::commitWindows(int first, const std::vector<Window>& scratch)
 {
@@ -25,7 +78,14 @@ void KeyLogs::updateAbsoluteFrom(int index)
   {
     const LogCoords* previous =
       (i > 0 && this->AbsoluteStatus[i - 1] == Status::Ok) ? &this->Absolute[i - 1] : nullptr;
-    const auto a = logarithm(this->Matrices[i], this->P, previous);
+    auto a = logarithm(this->Matrices[i], this->P, previous);
+    if (!a && previous)
+    {
+      // A chain wound beyond kMaxRotationWinding (Polar) starts again from the principal branch
+      // rather than leaving this key without an absolute log: so every key whose principal log
+      // exists has an absolute one, which is what a CurveNeeds check of absolute logs asks.
+      a = logarithm(this->Matrices[i], this->P);
+    }
     const bool unchanged =
       i > index && this->AbsoluteStatus[i] == a.status && (!a.ok() || a.value == this->Absolute[i]);
     this->AbsoluteStatus[i] = a.status;
@@ -47,7 +107,8 @@ Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisat
   KeyLogs next(p);
   for (std::size_t i = 0; i < matrices.size(); ++i)
   {
-    const Status status = next.insert(static_cast<int>(i), matrices[i], neighboursMustCombine);
+    const Status status = next.edit(
+      Edit::Insert, static_cast<int>(i), &matrices[i], neighboursMustCombine, nullptr, nullptr);
     if (status != Status::Ok)
     {
       if (failed)
@@ -61,8 +122,31 @@ Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisat
   return Status::Ok;
 }
 
-Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine)
+Status KeyLogs::build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisation p,
+  bool neighboursMustCombine, const CurveNeeds& needs, MissingLog* missing)
 {
+  // Each append checks the logs of the segments near it, which are all the logs the appended key
+  // adds: the appends check every log the curve points need.
+  KeyLogs next(p);
+  for (std::size_t i = 0; i < matrices.size(); ++i)
+  {
+    const Status status = next.edit(
+      Edit::Insert, static_cast<int>(i), &matrices[i], neighboursMustCombine, &needs, missing);
+    if (status != Status::Ok)
+    {
+      return status;
+    }
+  }
+  *this = std::move(next);
+  return Status::Ok;
+}
+
+Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine,
+  const CurveNeeds* needs, MissingLog* missing)
+{
+  MissingLog ignored;
+  MissingLog& found = missing ? *missing : ignored;
+  found = MissingLog();
   const int n = static_cast<int>(this->Matrices.size());
   const int size = n + (kind == Edit::Insert ? 1 : 0) - (kind == Edit::Erase ? 1 : 0);
   // The position in the old sequence of the key at position i of the edited one (-1 for an
@@ -112,10 +196,7 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
         w.status[slot] = Status::Ok;
         continue;
       }
-      const Eigen::Matrix4d step = relativeStep(edited(r), edited(i));
-      // A step that overflows is out of range, not "NaN or Inf in the input".
-      const auto l = step.allFinite() ? logarithm(step, this->P)
-                                      : Result<LogCoords>::failure(Status::OutOfRange);
+      const auto l = relativeLog(edited(r), edited(i), this->P);
       w.status[slot] = l.status;
       if (l)
       {
@@ -125,9 +206,49 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
     // Fatal between neighbours when asked (no curve could join them).
     if (neighboursMustCombine && r + 1 < size && w.status[kReach + 1] != Status::Ok)
     {
-      return w.status[kReach + 1];
+      found = MissingLog{ w.status[kReach + 1], r + 1, r };
+      return found.status;
     }
     scratch.push_back(w);
+  }
+  if (needs && size > 0)
+  {
+    // Every log the curve points near the edit combine, before anything changes: the relative
+    // ones are in the recomputed windows (their references are within kStencilReach + 1 of the
+    // edit, the windows within kReach), an absolute one is the principal log of the new key
+    // (updateAbsoluteFrom falls back to it).
+    const int keys = curveKeys(needs->scheme, size);
+    int firstSegment = 0;
+    int lastSegment = 0;
+    segmentsNear(needs->scheme, index, firstSegment, lastSegment);
+    if (needs->absolute)
+    {
+      if (kind != Edit::Erase)
+      {
+        const Status own = logarithm(*m, this->P).status;
+        if (own != Status::Ok)
+        {
+          found = MissingLog{ own, index, index };
+          return own;
+        }
+      }
+    }
+    else
+    {
+      forEachCombinedPair(needs->scheme, keys, firstSegment, lastSegment, [&](int i, int r) {
+        const Status status = scratch[r - first].status[i - r + kReach];
+        if (status != Status::Ok)
+        {
+          found = MissingLog{ status, i, r };
+          return false;
+        }
+        return true;
+      });
+      if (found.missing())
+      {
+        return found.status;
+      }
+    }
   }
   switch (kind)
   {
@@ -160,17 +281,122 @@ Status KeyLogs::edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighb
 
 Status KeyLogs::insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine)
 {
-  return this->edit(Edit::Insert, index, &m, neighboursMustCombine);
+  return this->edit(Edit::Insert, index, &m, neighboursMustCombine, nullptr, nullptr);
 }
 
 Status KeyLogs::replace(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine)
 {
-  return this->edit(Edit::Replace, index, &m, neighboursMustCombine);
+  return this->edit(Edit::Replace, index, &m, neighboursMustCombine, nullptr, nullptr);
 }
 
 Status KeyLogs::erase(int index, bool neighboursMustCombine)
 {
-  return this->edit(Edit::Erase, index, nullptr, neighboursMustCombine);
+  return this->edit(Edit::Erase, index, nullptr, neighboursMustCombine, nullptr, nullptr);
+}
+
+Status KeyLogs::insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine,
+  const CurveNeeds& needs, MissingLog* missing)
+{
+  return this->edit(Edit::Insert, index, &m, neighboursMustCombine, &needs, missing);
+}
+
+Status KeyLogs::replace(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine,
+  const CurveNeeds& needs, MissingLog* missing)
+{
+  return this->edit(Edit::Replace, index, &m, neighboursMustCombine, &needs, missing);
+}
+
+Status KeyLogs::erase(
+  int index, bool neighboursMustCombine, const CurveNeeds& needs, MissingLog* missing)
+{
+  return this->edit(Edit::Erase, index, nullptr, neighboursMustCombine, &needs, missing);
+}
+
+MissingLog KeyLogs::missingLog(const CurveNeeds& needs, int firstSegment, int lastSegment) const
+{
+  MissingLog out;
+  const int keys = curveKeys(needs.scheme, static_cast<int>(this->size()));
+  if (keys == 0)
+  {
+    return out;
+  }
+  if (needs.absolute)
+  {
+    forEachCombinedPoint(needs.scheme, keys, firstSegment, lastSegment, [&](int j) {
+      if (this->AbsoluteStatus[j] != Status::Ok)
+      {
+        out = MissingLog{ this->AbsoluteStatus[j], j, j };
+        return false;
+      }
+      return true;
+    });
+    return out;
+  }
+  forEachCombinedPair(needs.scheme, keys, firstSegment, lastSegment, [&](int i, int r) {
+    const Status status = this->relativeStatus(i, r);
+    if (status != Status::Ok)
+    {
+      out = MissingLog{ status, i, r };
+      return false;
+    }
+    return true;
+  });
+  return out;
+}
+
+MissingLog KeyLogs::missingLog(const std::vector<Eigen::Matrix4d>& points, int offset, int keyCount,
+  Parametrisation p, const CurveNeeds& needs, int firstSegment, int lastSegment, int involving,
+  int across)
+{
+  MissingLog out;
+  if (keyCount == 0)
+  {
+    return out;
+  }
+  auto point = [&](int j) -> const Eigen::Matrix4d& { return points[j - offset]; };
+  // Neighbouring segments share most of their logs: each is computed once.
+  std::vector<std::pair<int, int>> checked;
+  auto once = [&](int i, int r) {
+    if (std::find(checked.begin(), checked.end(), std::make_pair(i, r)) != checked.end())
+    {
+      return false;
+    }
+    checked.emplace_back(i, r);
+    return true;
+  };
+  if (needs.absolute)
+  {
+    forEachCombinedPoint(needs.scheme, keyCount, firstSegment, lastSegment, [&](int j) {
+      if ((involving >= 0 && j != involving) || !once(j, j))
+      {
+        return true;
+      }
+      const Status status = logarithm(point(j), p).status;
+      if (status != Status::Ok)
+      {
+        out = MissingLog{ status, j, j };
+        return false;
+      }
+      return true;
+    });
+    return out;
+  }
+  forEachCombinedPair(needs.scheme, keyCount, firstSegment, lastSegment, [&](int i, int r) {
+    const bool wanted = (involving < 0 || i == involving || r == involving) &&
+      (across < 0 || (std::min(i, r) < across && std::max(i, r) >= across));
+    if (!wanted || !once(i, r))
+    {
+      return true;
+    }
+    const Status status = relativeLog(point(r), point(i), p).status;
+    if (status != Status::Ok)
+    {
+      out = MissingLog{ status, i, r };
+      return false;
+    }
+    return true;
+  });
+  return out;
 }
 
 const LogCoords* KeyLogs::relative(int i, int r) const
@@ -195,7 +421,8 @@ Status KeyLogs::relativeStatus(int i, int r) const
   return this->Windows[r].status[i - r + kReach];
 }
 
-Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const
+Status KeyLogs::combineAbout(
+  const CurveWeights& w, int reference, Eigen::Matrix4d& out, MissingLog* missing) const
 {
   LogCoords sum = LogCoords::Zero();
   for (int j = 0; j < w.count; ++j)
@@ -203,7 +430,12 @@ Status KeyLogs::combineAbout(const CurveWeights& w, int reference, Eigen::Matrix
     const LogCoords* l = this->relative(w.key[j], reference);
     if (!l)
     {
-      return this->relativeStatus(w.key[j], reference);
+      const Status status = this->relativeStatus(w.key[j], reference);
+      if (missing)
+      {
+        *missing = MissingLog{ status, w.key[j], reference };
+      }
+      return status;
     }
     sum += w.weight[j] * *l;
   }
@@ -234,10 +466,11 @@ Status KeyLogs::checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) c
   return !involved || determinantMatches(out, expected) ? Status::Ok : Status::InaccurateResult;
 }
 
-Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& result) const
+Status KeyLogs::combineRelative(
+  const CurveWeights& w, Eigen::Matrix4d& result, MissingLog* missing) const
 {
   Eigen::Matrix4d out;
-  const Status status = this->combineRelativeUnchecked(w, out);
+  const Status status = this->combineRelativeUnchecked(w, out, missing);
   if (status != Status::Ok)
   {
     return status;
@@ -250,7 +483,8 @@ Status KeyLogs::combineRelative(const CurveWeights& w, Eigen::Matrix4d& result) 
   return check;
 }
 
-Status KeyLogs::combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d& out) const
+Status KeyLogs::combineRelativeUnchecked(
+  const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const
 {
   int a = -1;
   int b = -1;
@@ -266,14 +500,14 @@ Status KeyLogs::combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d&
       b = j;
     }
   }
-  const Status status = this->combineAbout(w, w.key[a], out);
+  const Status status = this->combineAbout(w, w.key[a], out, missing);
   const double gap = b < 0 ? kHandOver : w.weight[a] - w.weight[b];
   if (status != Status::Ok || gap >= kHandOver)
   {
     return status;
   }
   Eigen::Matrix4d other;
-  if (this->combineAbout(w, w.key[b], other) != Status::Ok)
+  if (this->combineAbout(w, w.key[b], other, nullptr) != Status::Ok)
   {
     return status; // no result about b: keep the one about a
   }
@@ -293,13 +527,18 @@ Status KeyLogs::combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d&
   return status;
 }
 
-Status KeyLogs::combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) const
+Status KeyLogs::combineAbsolute(
+  const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const
 {
   LogCoords sum = LogCoords::Zero();
   for (int j = 0; j < w.count; ++j)
   {
     if (this->AbsoluteStatus[w.key[j]] != Status::Ok)
     {
+      if (missing)
+      {
+        *missing = MissingLog{ this->AbsoluteStatus[w.key[j]], w.key[j], w.key[j] };
+      }
       return this->AbsoluteStatus[w.key[j]];
     }
     sum += w.weight[j] * this->Absolute[w.key[j]];

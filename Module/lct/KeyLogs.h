@@ -23,6 +23,14 @@
  * Keys are inserted, replaced and erased in O(kReach^2) logs (plus the absolute chain after the
  * change, which stops as soon as a log keeps its branch), so loading n keys in time order costs
  * O(n) logs.
+ *
+ * Not every pair of keys has a relative log (Polar: a step beyond the conditioning limit;
+ * MatrixLog: also one without a real logarithm), nor every key an absolute one (MatrixLog). An
+ * edit or a build given CurveNeeds fails, changing nothing, when a curve point of that scheme
+ * would combine a log that does not exist (lct::curveStencil: every key of a segment's stencil
+ * about each of its possible references, up to kStencilReach keys apart), and names it
+ * (MissingLog): so an interpolator that validates its keys this way never fails for a missing log
+ * when it evaluates.
  */
 #ifndef lct_KeyLogs_h
 #define lct_KeyLogs_h
@@ -30,15 +38,39 @@
 #include "vtkLCTModule.h"
 
 #include "lct/Curves.h"
+#include "lct/Keyframes.h"
 #include "lct/LogCoords.h"
 #include "lct/Status.h"
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace lct
 {
+
+/// Which logs the curve points of a scheme combine: with `absolute`, the absolute log of every
+/// key (combineAbsolute); otherwise the relative log of every key of each segment's stencil about
+/// each of the segment's possible references (combineRelative; lct::curveStencil).
+struct CurveNeeds
+{
+  CurveScheme scheme = CurveScheme::CatmullRom;
+  bool absolute = false;
+};
+
+/// A log that a curve point needs and that does not exist, and why: log(M_reference^-1 M_key),
+/// or the absolute log of `key` when reference == key (indices of the keys, or for Bezier of its
+/// key-and-control sequence). status is Ok, and the indices -1, when none is missing.
+struct MissingLog
+{
+  Status status = Status::Ok;
+  int key = -1;
+  int reference = -1;
+
+  bool missing() const { return this->status != Status::Ok; }
+};
 
 class VTKLCT_EXPORT KeyLogs
 {
@@ -48,6 +80,9 @@ public:
   static constexpr int kReach = 7;
   /// Width of the hand-over between two reference points, in weight difference.
   static constexpr double kHandOver = 0.1;
+  /// The farthest a key that a curve point combines is from its reference (Subdivision: three
+  /// keys; lct::curveStencil).
+  static constexpr int kStencilReach = 3;
 
   explicit KeyLogs(Parametrisation p = Parametrisation::Polar)
     : P(p)
@@ -68,6 +103,40 @@ public:
   /// would then have no relative log.
   Status erase(int index, bool neighboursMustCombine);
 
+  ///@{
+  /// The same, failing too (state unchanged) when a curve point `needs` combines a log that the
+  /// edit leaves missing; `missing` (if given) then names it, or the two neighbours without a
+  /// relative log (key the later, reference the earlier), with indices after the edit.
+  Status build(const std::vector<Eigen::Matrix4d>& matrices, Parametrisation p,
+    bool neighboursMustCombine, const CurveNeeds& needs, MissingLog* missing);
+  Status insert(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine,
+    const CurveNeeds& needs, MissingLog* missing);
+  Status replace(int index, const Eigen::Matrix4d& m, bool neighboursMustCombine,
+    const CurveNeeds& needs, MissingLog* missing);
+  Status erase(int index, bool neighboursMustCombine, const CurveNeeds& needs, MissingLog* missing);
+  ///@}
+
+  /// The first log that a curve point on segments firstSegment..lastSegment (all by default)
+  /// needs and that does not exist; Ok when there is none.
+  MissingLog missingLog(const CurveNeeds& needs, int firstSegment = 0,
+    int lastSegment = std::numeric_limits<int>::max()) const;
+
+  /// log(M_r^-1 M_i) in p, computed as the logs held here are (a step that overflows is
+  /// OutOfRange), for callers that check or use a log outside a KeyLogs and must find the same.
+  static Result<LogCoords> relativeLog(
+    const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p);
+
+  /// The same check for points that a caller holds outside a KeyLogs (an interpolator whose logs
+  /// are rebuilt lazily, or the Bezier sequence of a few keys), computing each log it needs once:
+  /// `points[j - offset]` is key j of keyCount keys (Bezier: point j of their key-and-control
+  /// sequence), and the points the checked segments combine must be in the vector. With
+  /// `involving` >= 0 only the logs of that key are checked (those an insertion or a replacement
+  /// adds), with `across` >= 0 only the relative logs between a key before it and one from it on
+  /// (those an erasure adds): the others are known to exist.
+  static MissingLog missingLog(const std::vector<Eigen::Matrix4d>& points, int offset, int keyCount,
+    Parametrisation p, const CurveNeeds& needs, int firstSegment, int lastSegment,
+    int involving = -1, int across = -1);
+
   std::size_t size() const { return this->Matrices.size(); }
   const Eigen::Matrix4d& matrix(std::size_t i) const { return this->Matrices[i]; }
   Parametrisation parametrisation() const { return this->P; }
@@ -78,13 +147,16 @@ public:
   Status relativeStatus(int i, int r) const;
 
   /// The relative form about the point of largest weight, with the hand-over. Fails, leaving
-  /// `out` unchanged, with the status of a missing relative log or of the exp, or with
-  /// OutOfRange when the result is not finite.
-  Status combineRelative(const CurveWeights& w, Eigen::Matrix4d& out) const;
+  /// `out` unchanged, with the status of a missing relative log (then named in `missing`, if
+  /// given) or of the exp, or with OutOfRange when the result is not finite.
+  Status combineRelative(
+    const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing = nullptr) const;
 
   /// The absolute form exp(sum_i w_i log M_i). Fails, leaving `out` unchanged, with the status
-  /// of a key without an absolute log (e.g. NoRealLogarithm, MatrixLog) or of the exp.
-  Status combineAbsolute(const CurveWeights& w, Eigen::Matrix4d& out) const;
+  /// of a key without an absolute log (e.g. NoRealLogarithm, MatrixLog; named in `missing`, if
+  /// given) or of the exp.
+  Status combineAbsolute(
+    const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing = nullptr) const;
 
 private:
   /// The relative logs of window r (entries i = r - kReach .. r + kReach) of `matrices`.
@@ -100,11 +172,14 @@ private:
     Erase
   };
   /// Applies an edit, recomputing only the windows within reach of it; unchanged on failure.
-  Status edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine);
+  Status edit(Edit kind, int index, const Eigen::Matrix4d* m, bool neighboursMustCombine,
+    const CurveNeeds* needs, MissingLog* missing);
   void commitWindows(int first, const std::vector<Window>& scratch);
   void updateAbsoluteFrom(int index);
-  Status combineAbout(const CurveWeights& w, int reference, Eigen::Matrix4d& out) const;
-  Status combineRelativeUnchecked(const CurveWeights& w, Eigen::Matrix4d& out) const;
+  Status combineAbout(
+    const CurveWeights& w, int reference, Eigen::Matrix4d& out, MissingLog* missing) const;
+  Status combineRelativeUnchecked(
+    const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const;
 
   Parametrisation P;
   std::vector<Eigen::Matrix4d> Matrices;
@@ -119,6 +194,94 @@ private:
   /// OK, or InaccurateResult when a result involving ill-conditioned keys fails that check.
   Status checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) const;
 };
+
+/// The keys of a lct::Keyframes around a change at time t, in time order, for the checks of an
+/// edit by an interpolator whose logs are rebuilt lazily: `keys[edited]` is the inserted or
+/// replacing key; for a removal, `edited` is the first key after the removed one. As a part of
+/// the whole sequence, key j of the window is key offset() + j of count() keys, with phantom keys
+/// on a side that does not reach the end, so that stencils near the change are clamped only
+/// where the keys really end.
+template <typename Key>
+struct KeyWindow
+{
+  /// Keys on each side of a change that a check looks at: the logs an edit adds pair keys at most
+  /// kStencilReach apart, and their stencils reach as far again.
+  static constexpr int kSide = 2 * KeyLogs::kStencilReach;
+
+  std::vector<const Key*> keys;
+  int edited = 0;
+  bool reachesFirst = true;
+  bool reachesLast = true;
+
+  int offset() const { return this->reachesFirst ? 0 : kSide; }
+  int count() const
+  {
+    return this->offset() + static_cast<int>(this->keys.size()) + (this->reachesLast ? 0 : kSide);
+  }
+};
+
+/// The window of `keyframes` around time t, with `replacement` (if any) inserted at t in place
+/// of the key there. O(log n).
+template <typename Key>
+KeyWindow<Key> keyWindow(const Keyframes<Key>& keyframes, double t, const Key* replacement)
+{
+  KeyWindow<Key> w;
+  std::vector<const Key*> after;
+  keyframes.around(t, KeyWindow<Key>::kSide, w.keys, after);
+  w.reachesFirst = static_cast<int>(w.keys.size()) < KeyWindow<Key>::kSide;
+  w.reachesLast = static_cast<int>(after.size()) < KeyWindow<Key>::kSide;
+  w.edited = static_cast<int>(w.keys.size());
+  if (replacement)
+  {
+    w.keys.push_back(replacement);
+  }
+  w.keys.insert(w.keys.end(), after.begin(), after.end());
+  return w;
+}
+
+/// The first log that the edit of a window adds (an insertion or replacement of keys[edited],
+/// or with `removal` the removal before keys[edited]) and that curve points `needs` combine,
+/// computed here in p on the matrices matrixOf(key); with `neighboursMustCombine` also the steps
+/// from the edited key's neighbours (every curve joins them). Indices of the window's keys; Ok
+/// when none is missing.
+template <typename Key, typename MatrixOf>
+MissingLog missingAfterEdit(const KeyWindow<Key>& w, bool removal, MatrixOf&& matrixOf,
+  Parametrisation p, const CurveNeeds& needs, bool neighboursMustCombine)
+{
+  MissingLog missing;
+  const int m = static_cast<int>(w.keys.size());
+  if (m == 0 || (removal && (w.edited == 0 || w.edited == m)))
+  {
+    return missing; // a removal at an end joins nothing
+  }
+  std::vector<Eigen::Matrix4d> points;
+  points.reserve(m);
+  for (const Key* key : w.keys)
+  {
+    points.push_back(matrixOf(*key));
+  }
+  const int offset = w.offset();
+  const int edited = offset + w.edited;
+  missing =
+    KeyLogs::missingLog(points, offset, w.count(), p, needs, edited - KeyLogs::kStencilReach - 1,
+      edited + KeyLogs::kStencilReach, removal ? -1 : edited, removal ? edited : -1);
+  for (int i = removal ? w.edited : std::max(w.edited, 1); neighboursMustCombine &&
+       !missing.missing() && i <= (removal ? w.edited : std::min(w.edited + 1, m - 1));
+       ++i)
+  {
+    const Status status = KeyLogs::relativeLog(points[i - 1], points[i], p).status;
+    if (status != Status::Ok)
+    {
+      missing = MissingLog{ status, offset + i, offset + i - 1 };
+    }
+  }
+  if (missing.missing())
+  {
+    missing.key -= offset;
+    missing.reference -= offset;
+  }
+  return missing;
+}
 
 } // namespace lct
 

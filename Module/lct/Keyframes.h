@@ -54,6 +54,27 @@ public:
     const auto it = this->Keys.upper_bound(t);
     return it == this->Keys.end() ? nullptr : &it->second;
   }
+  /// The keys around time t: up to `count` strictly before t and up to `count`
+  /// strictly after it, each in time order (O(log n + count), no flat view needed).
+  /// Fewer than `count` on a side means that side reaches the first or the last key.
+  void around(
+    double t, int count, std::vector<const Key*>& before, std::vector<const Key*>& after) const
+  {
+    before.clear();
+    after.clear();
+    for (auto it = this->Keys.lower_bound(t);
+         it != this->Keys.begin() && static_cast<int>(before.size()) < count;)
+    {
+      --it;
+      before.push_back(&it->second);
+    }
+    std::reverse(before.begin(), before.end());
+    for (auto it = this->Keys.upper_bound(t);
+         it != this->Keys.end() && static_cast<int>(after.size()) < count; ++it)
+    {
+      after.push_back(&it->second);
+    }
+  }
   /// Whether a key at t keeps the span of the key times finite (the curve weights divide by
   /// time differences).
   bool keepsFiniteSpan(double t) const

@@ -83,13 +83,18 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
 
 Result<LogCoords> polarInverse(const LogCoords& c)
 {
-  using R = Result<LogCoords>;
   const auto m = polarExp(c);
   if (!m)
   {
-    return R::failure(m.status);
+    return Result<LogCoords>::failure(m.status);
   }
-  const Eigen::Matrix4d inverse = inverseAffine(m.value);
+  return polarInverse(c, m.value);
+}
+
+Result<LogCoords> polarInverse(const LogCoords& c, const Eigen::Matrix4d& m)
+{
+  using R = Result<LogCoords>;
+  const Eigen::Matrix4d inverse = inverseAffine(m);
   if (!inverse.allFinite())
   {
     return R::failure(Status::OutOfRange);

@@ -37,6 +37,9 @@ VTKLCT_EXPORT Result<LogCoords> polarLog(
 /// M^-1 = T(-A^-1 l) U^T (U exp(-Y) U^T), so psi(M^-1) = (-A^-1 l, -w, -U Y U^T) with U = exp(w).
 /// Fails with OutOfRange when the inverse is not representable.
 VTKLCT_EXPORT Result<LogCoords> polarInverse(const LogCoords& c);
+/// The same for a caller that has already computed m = polarExp(c).value (vtkLogTransform
+/// commits a state with its inverse), without exponentiating c again.
+VTKLCT_EXPORT Result<LogCoords> polarInverse(const LogCoords& c, const Eigen::Matrix4d& m);
 
 /// phi(c). Fails with NonFinite (c not finite), OutOfRange (the result overflows, or a stretch
 /// underflows below the normal range) or IllConditioned (stretch condition number above

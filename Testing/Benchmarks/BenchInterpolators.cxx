@@ -43,12 +43,7 @@ void addKeys(int n, vtkTransformInterpolatorLCT* ours, vtkTransformInterpolator*
     {
       vtk->AddTransform(k, m);
     }
-    const Eigen::Vector3d s(
-      random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15), random.LogUniform(0.87, 1.15));
-    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
-    step.topLeftCorner<3, 3>() = random.Rotation(random.Uniform(0.0, 0.52)) * s.asDiagonal();
-    step.topRightCorner<3, 1>() = random.Translation(lct_test::TransformClass::Rigid) / 10.0;
-    key = step * key;
+    key = random.KeyframeStep() * key;
   }
 }
 

@@ -217,16 +217,25 @@ private:
                                   << CameraState::Of(camera).Describe());
     const int errors = this->ErrorCount();
     const int result = this->Path->AddCamera(t, null ? nullptr : camera.Get());
-    LCT_FUZZ_CHECK(result == (valid ? 1 : 0),
+    // The CameraMatrix method also refuses a valid key with which a curve point would combine a
+    // camera-matrix step without a MatrixLog logarithm (D19), naming the method.
+    const bool refusedByMethod = valid && result == 0 && this->CameraMatrix() &&
+      this->Errors.Last.find("with the CameraMatrix method") != std::string::npos;
+    LCT_FUZZ_CHECK(result == (valid ? 1 : 0) || refusedByMethod,
       "AddCamera returned " << result << " for a key lct::toCameraKey calls "
                             << (key.ok() ? "valid" : "invalid") << " (t = " << t << ")\n"
                             << CameraState::Of(camera).Describe());
-    LCT_FUZZ_CHECK((this->ErrorCount() > errors) == !valid,
+    LCT_FUZZ_CHECK((this->ErrorCount() > errors) == (result == 0),
       "AddCamera: error reporting does not match the result");
-    if (valid)
+    if (result == 1)
     {
       this->Keys[t] = ShadowKey{ p.parallelProjection, p, lct::cameraMatrix(restored.value) };
     }
+  }
+
+  bool CameraMatrix() const
+  {
+    return this->Path->GetMethod() == vtkCameraInterpolatorLCT::METHOD_CAMERA_MATRIX;
   }
 
   void Remove()
@@ -234,9 +243,18 @@ private:
     const double t = this->Time();
     LCT_FUZZ_TRACE("RemoveCamera t " << t);
     const int errors = this->ErrorCount();
-    this->Path->RemoveCamera(t);
-    LCT_FUZZ_CHECK(this->ErrorCount() == errors, "RemoveCamera reported an error");
+    const int result = this->Path->RemoveCamera(t);
     const auto it = this->Find(t);
+    if (result == 0)
+    {
+      // Only the CameraMatrix method refuses, for the steps the removal would bring together.
+      LCT_FUZZ_CHECK(this->CameraMatrix() && it != this->Keys.end() &&
+          this->ErrorCount() > errors &&
+          this->Path->GetNumberOfCameras() == static_cast<int>(this->Keys.size()),
+        "RemoveCamera refused: " << this->Errors.Last);
+      return;
+    }
+    LCT_FUZZ_CHECK(this->ErrorCount() == errors, "RemoveCamera reported an error");
     if (it != this->Keys.end())
     {
       this->Keys.erase(it);
@@ -284,6 +302,14 @@ private:
       LCT_FUZZ_CHECK(cameraMatrix || this->Keys.empty() || std::isnan(t) || std::isinf(t) ||
           (overshoot && this->Errors.Last.find("overshoot") != std::string::npos),
         "InterpolateCamera (FocalFrame) failed at t = " << t << ": " << this->Errors.Last);
+      // The CameraMatrix method may fail on its combination or its decomposition, never for a
+      // missing MatrixLog step: the keys that need one are refused (D19).
+      LCT_FUZZ_CHECK(!cameraMatrix ||
+          (this->Errors.Last.find(lct::describe(lct::Status::NoRealLogarithm)) ==
+              std::string::npos &&
+            this->Errors.Last.find(lct::describe(lct::Status::MagnitudeOutOfRange)) ==
+              std::string::npos),
+        "InterpolateCamera (CameraMatrix) misses a log at t = " << t << ": " << this->Errors.Last);
       return;
     }
     LCT_FUZZ_CHECK(!this->Keys.empty() && std::isfinite(t),
@@ -332,7 +358,15 @@ private:
       {
         const int type = this->In.Int(0, 7) == 0 ? this->In.Int(-3, 9) : this->In.Int(0, 3);
         LCT_FUZZ_TRACE("SetInterpolationType " << type);
-        this->Path->SetInterpolationType(type);
+        const int old = this->Path->GetInterpolationType();
+        const int errors = this->ErrorCount();
+        const int result = this->Path->SetInterpolationType(type);
+        // Clamped; refused (reported, unchanged) only by the CameraMatrix method.
+        LCT_FUZZ_CHECK(result == 1 ? this->Path->GetInterpolationType() == std::clamp(type, 0, 3) &&
+              this->ErrorCount() == errors
+                                   : this->CameraMatrix() &&
+              this->Path->GetInterpolationType() == old && this->ErrorCount() > errors,
+          "SetInterpolationType(" << type << ") returned " << result);
         break;
       }
       case 5:
@@ -346,7 +380,14 @@ private:
       {
         const int method = this->In.Int(0, 7) == 0 ? this->In.Int(-2, 4) : this->In.Int(0, 1);
         LCT_FUZZ_TRACE("SetMethod " << method);
-        this->Path->SetMethod(method);
+        const int old = this->Path->GetMethod();
+        const int errors = this->ErrorCount();
+        const int result = this->Path->SetMethod(method);
+        LCT_FUZZ_CHECK(result == 1
+            ? this->Path->GetMethod() == std::clamp(method, 0, 1) && this->ErrorCount() == errors
+            : std::clamp(method, 0, 1) == vtkCameraInterpolatorLCT::METHOD_CAMERA_MATRIX &&
+              this->Path->GetMethod() == old && this->ErrorCount() > errors,
+          "SetMethod(" << method << ") returned " << result);
         break;
       }
       case 7:

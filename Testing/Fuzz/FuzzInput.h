@@ -12,6 +12,7 @@
 #define lct_fuzz_FuzzInput_h
 
 #include "lct/LogCoords.h"
+#include "lct/Status.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -90,6 +91,30 @@ inline bool Verbose()
       std::fprintf(stderr, "> %s\n", lct_fuzz_trace.str().c_str());                                \
     }                                                                                              \
   } while (false)
+
+/// Whether an interpolator's error at evaluation is one that lct/KeyLogs.h documents for a
+/// combination of accepted keys: the in-between out of range, beyond the conditioning limit, or
+/// inaccurate between ill-conditioned keys (NaN or Inf only for non-finite input). A missing
+/// logarithm never is: the interpolators refuse every key and setting that would leave a log a
+/// curve point combines missing (D19), and say "a defect of vtkLCT" should one be missing anyway.
+inline bool ExplainedRefusal(const std::string& message)
+{
+  if (message.find("a defect of vtkLCT") != std::string::npos ||
+    (message.find("the combination of the keys failed") == std::string::npos &&
+      message.find("the absolute logarithms (ConsistentRotation) failed") == std::string::npos))
+  {
+    return false;
+  }
+  for (const lct::Status s : { lct::Status::NonFinite, lct::Status::OutOfRange,
+         lct::Status::IllConditioned, lct::Status::InaccurateResult })
+  {
+    if (message.find(lct::describe(s)) != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 /// A defect in Module/ or Examples/ that a target skips until it is fixed (each one is described
 /// in the fuzzing report and has a regression input in the target's corpus). Returns `matches`,

@@ -10,7 +10,6 @@
 // finite and affine; a call returning 0 reported an error and left the output untouched; a key
 // time is reproduced by the interpolating types.
 #include "FuzzInput.h"
-#include "FuzzMissingKeyLog.h"
 
 #include "vtkLogTransform.h"
 #include "vtkTransformInterpolatorLCT.h"
@@ -234,23 +233,25 @@ private:
     LCT_FUZZ_TRACE("RemoveTransform t " << t);
     const int errors = this->ErrorCount();
     const int before = this->Path->GetNumberOfTransforms();
-    this->Path->RemoveTransform(t);
+    const int result = this->Path->RemoveTransform(t);
     const int after = this->Path->GetNumberOfTransforms();
     const auto it = this->Find(t);
     if (it == this->Keys.end())
     {
-      LCT_FUZZ_CHECK(after == before && this->ErrorCount() == errors,
+      LCT_FUZZ_CHECK(result == 1 && after == before && this->ErrorCount() == errors,
         "RemoveTransform of a time without a key changed something");
       return;
     }
     if (after == before - 1)
     {
       this->Keys.erase(it);
-      LCT_FUZZ_CHECK(this->ErrorCount() == errors, "RemoveTransform removed and reported an error");
+      LCT_FUZZ_CHECK(result == 1 && this->ErrorCount() == errors,
+        "RemoveTransform removed and reported an error or returned " << result);
     }
     else
     {
-      LCT_FUZZ_CHECK(after == before && this->ErrorCount() > errors,
+      // Refused: the keys left would miss a log the curve combines (reported, key kept).
+      LCT_FUZZ_CHECK(result == 0 && after == before && this->ErrorCount() > errors,
         "RemoveTransform neither removed the key nor reported why");
     }
   }
@@ -278,12 +279,15 @@ private:
     const auto usable = [](const Eigen::Matrix4d& m) { return lct::polarLog(m).ok(); };
     const bool valid = it != this->Keys.end() && (!hasIncoming || usable(incoming)) &&
       (!hasOutgoing || usable(outgoing));
-    LCT_FUZZ_CHECK(result == (valid ? 1 : 0),
+    // A Bezier curve also refuses controls with which its curve points would miss a log (D19).
+    const bool bezier =
+      this->Path->GetInterpolationType() == vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER;
+    LCT_FUZZ_CHECK(result == (valid ? 1 : 0) || (valid && bezier && result == 0),
       "SetBezierControls returned " << result << " for a " << (valid ? "valid" : "invalid")
                                     << " call");
-    LCT_FUZZ_CHECK((this->ErrorCount() > errors) == !valid,
+    LCT_FUZZ_CHECK((this->ErrorCount() > errors) == (result == 0),
       "SetBezierControls: error reporting does not match the result");
-    if (valid)
+    if (result == 1)
     {
       it->second.HasIncoming = hasIncoming;
       it->second.HasOutgoing = hasOutgoing;
@@ -375,33 +379,18 @@ private:
         this->ErrorCount() > errors, "InterpolateTransform returned 0 without an error");
       LCT_FUZZ_CHECK(lct_fuzz::SameBits(before.data(), after.data(), 16),
         "InterpolateTransform failed but changed the output");
-      // Accepted Polar keys must interpolate inside their range (MatrixLog may lack a real log
-      // between keys that are not neighbours; Bezier builds logs of control points). A failure
-      // must be a refusal lct/KeyLogs.h documents for the combination (a result out of range,
-      // too ill-conditioned, or inaccurate between ill-conditioned keys), the output's own
-      // SetMatrix, or the known D19.
-      const bool explained = this->Keys.empty() || !std::isfinite(t) || this->MatrixLog() ||
-        this->Path->GetInterpolationType() ==
-          vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER ||
+      // Accepted keys must interpolate inside their range, in either parametrisation and for
+      // every type: every call that changes which logs the curve combines checks them (D19). A
+      // failure must be a refusal lct/KeyLogs.h documents for the combination (a result out of
+      // range, too ill-conditioned, or inaccurate between ill-conditioned keys), or the
+      // output's own SetMatrix.
+      const bool explained = this->Keys.empty() || !std::isfinite(t) ||
         this->Errors.LastSource != this->Path.Get() ||
         lct_fuzz::ExplainedRefusal(this->Errors.Last);
-      if (!explained)
-      {
-        std::vector<Eigen::Matrix4d> matrices;
-        for (const auto& [time, key] : this->Keys)
-        {
-          matrices.push_back(key.Matrix);
-        }
-        if (lct_fuzz::Known("D19",
-              lct_fuzz::MissingKeyLog(
-                matrices, lct::Parametrisation::Polar, this->Path->GetConsistentRotation())))
-        {
-          return;
-        }
-      }
       LCT_FUZZ_CHECK(explained,
-        "InterpolateTransform (Polar) failed at t = " << t << " with accepted keys: "
-                                                      << this->Errors.Last);
+        "InterpolateTransform (" << (this->MatrixLog() ? "MatrixLog" : "Polar") << ", type "
+                                 << this->Path->GetInterpolationType() << ") failed at t = " << t
+                                 << " with accepted keys: " << this->Errors.Last);
       return;
     }
     LCT_FUZZ_CHECK(!this->Keys.empty() && std::isfinite(t),
@@ -451,7 +440,18 @@ private:
       {
         const int type = this->In.Int(0, 7) == 0 ? this->In.Int(-3, 9) : this->In.Int(0, 4);
         LCT_FUZZ_TRACE("SetInterpolationType " << type);
-        this->Path->SetInterpolationType(type);
+        const int old = this->Path->GetInterpolationType();
+        const int errors = this->ErrorCount();
+        const int result = this->Path->SetInterpolationType(type);
+        // Clamped as vtkSetClampMacro does; refused (reported, unchanged) when the keys miss a
+        // log its curve points combine.
+        const int expected = std::clamp(type, 0, 4);
+        LCT_FUZZ_CHECK(result == 1
+            ? this->Path->GetInterpolationType() == expected && this->ErrorCount() == errors
+            : result == 0 && this->Path->GetInterpolationType() == old &&
+              this->ErrorCount() > errors && !this->Keys.empty(),
+          "SetInterpolationType(" << type << ") returned " << result << ", type "
+                                  << this->Path->GetInterpolationType());
         break;
       }
       case 7:
@@ -461,7 +461,14 @@ private:
       {
         const bool on = this->In.Bool();
         LCT_FUZZ_TRACE("ConsistentRotation " << on);
-        this->Path->SetConsistentRotation(on);
+        const vtkTypeBool old = this->Path->GetConsistentRotation();
+        const int errors = this->ErrorCount();
+        const int result = this->Path->SetConsistentRotation(on);
+        LCT_FUZZ_CHECK(result == 1
+            ? this->Path->GetConsistentRotation() == on && this->ErrorCount() == errors
+            : result == 0 && this->Path->GetConsistentRotation() == old &&
+              this->ErrorCount() > errors && !this->Keys.empty(),
+          "SetConsistentRotation(" << on << ") returned " << result);
         break;
       }
       case 9:

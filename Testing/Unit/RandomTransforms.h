@@ -150,6 +150,48 @@ public:
     return m;
   }
 
+  /// A key for the tests of what the interpolators refuse: a GeneralAffine linear part (60 %), a
+  /// stretch diag(10^a, 1, 10^-a) with a in [4, 6.5] in random orientations (25 %: the step
+  /// between two of them can exceed the 1e13 conditioning limit, so it has no log), or a half
+  /// turn with a non-uniform scale (15 %: no real matrix log); translated as Rigid, or not.
+  Eigen::Matrix4d HardKey(bool translated)
+  {
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+    const double kind = this->Uniform(0.0, 1.0);
+    if (kind < 0.6)
+    {
+      m.topLeftCorner<3, 3>() = this->Linear(TransformClass::GeneralAffine);
+    }
+    else if (kind < 0.85)
+    {
+      const double a = this->Uniform(4.0, 6.5);
+      m.topLeftCorner<3, 3>() = this->Rotation() *
+        Eigen::Vector3d(std::pow(10.0, a), 1.0, std::pow(10.0, -a)).asDiagonal() * this->Rotation();
+    }
+    else
+    {
+      m.topLeftCorner<3, 3>() = this->Rotation(kPi) * Eigen::Vector3d(2.0, 1.0, 0.5).asDiagonal();
+    }
+    if (translated)
+    {
+      m.topRightCorner<3, 1>() = this->Translation(TransformClass::Rigid);
+    }
+    return m;
+  }
+
+  /// One step of a keyframed animation (the benchmarks' key walks): a rotation of up to 30
+  /// degrees about a random axis, up to 15 % of non-uniform scale change, and a translation a
+  /// tenth of a Rigid one.
+  Eigen::Matrix4d KeyframeStep()
+  {
+    const Eigen::Vector3d s(
+      this->LogUniform(0.87, 1.15), this->LogUniform(0.87, 1.15), this->LogUniform(0.87, 1.15));
+    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
+    step.topLeftCorner<3, 3>() = this->Rotation(this->Uniform(0.0, 0.52)) * s.asDiagonal();
+    step.topRightCorner<3, 1>() = this->Translation(TransformClass::Rigid) / 10.0;
+    return step;
+  }
+
 private:
   std::mt19937_64 Engine;
 };

@@ -269,7 +269,7 @@ TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
   EXPECT_EQ(interpolator->GetNumberOfCameras(), 1);
 }
 
-TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndReportsMissingLogs)
+TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndRefusesMissingLogs)
 {
   const auto keys = randomKeys(7, 4);
   vtkNew<vtkCameraInterpolatorLCT> interpolator;
@@ -304,7 +304,8 @@ TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndReportsMissi
   vtkNew<vtkCamera> mid;
   ASSERT_EQ(interpolator->InterpolateCamera(1.5, mid), 1);
 
-  // A half turn between keys: no real matrix log, reported at evaluation.
+  // A half turn between keys: no real matrix log. The method refuses the key that would need it
+  // (it used to accept it and fail at evaluation, D19), naming the keys and the way out.
   vtkNew<vtkCameraInterpolatorLCT> halfTurn;
   halfTurn->SetMethodToCameraMatrix();
   vtkNew<ErrorCounter> errors;
@@ -313,10 +314,25 @@ TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndReportsMissi
   a->SetPosition(0, 0, 5);
   b->SetPosition(0, 0, -5);
   ASSERT_EQ(halfTurn->AddCamera(0, a), 1);
-  ASSERT_EQ(halfTurn->AddCamera(1, b), 1);
-  EXPECT_EQ(halfTurn->InterpolateCamera(0.5, mid), 0);
+  EXPECT_EQ(halfTurn->AddCamera(1, b), 0);
   EXPECT_EQ(errors->Count, 1);
-  // The default method has no such failure.
-  halfTurn->SetMethodToFocalFrame();
+  EXPECT_NE(errors->Last.find("the key at t = 1"), std::string::npos) << errors->Last;
+  EXPECT_NE(errors->Last.find("the key at t = 0"), std::string::npos) << errors->Last;
+  EXPECT_NE(errors->Last.find("no MatrixLog logarithm"), std::string::npos) << errors->Last;
+  EXPECT_NE(errors->Last.find("SetMethodToFocalFrame()"), std::string::npos) << errors->Last;
+  EXPECT_EQ(halfTurn->GetNumberOfCameras(), 1);
+  // The default method has no such limit; switching back to CameraMatrix is refused for the keys
+  // it cannot interpolate, and the method kept.
+  ASSERT_EQ(halfTurn->SetMethodToFocalFrame(), 1);
+  ASSERT_EQ(halfTurn->AddCamera(1, b), 1);
   EXPECT_EQ(halfTurn->InterpolateCamera(0.5, mid), 1);
+  EXPECT_EQ(halfTurn->SetMethodToCameraMatrix(), 0);
+  EXPECT_EQ(halfTurn->GetMethod(), vtkCameraInterpolatorLCT::METHOD_FOCAL_FRAME);
+  EXPECT_EQ(errors->Count, 2);
+  EXPECT_NE(errors->Last.find("SetMethod(CameraMatrix)"), std::string::npos) << errors->Last;
+  for (int i = 0; i <= 10; ++i)
+  {
+    EXPECT_EQ(halfTurn->InterpolateCamera(i / 10.0, mid), 1) << i;
+  }
+  EXPECT_EQ(errors->Count, 2) << errors->Last;
 }

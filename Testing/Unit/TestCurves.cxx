@@ -1,9 +1,11 @@
 // Curve schemes as weights over keys: partition of unity, interpolation of keys, continuity,
 // locality, and the subdivision limit against explicit 4-point subdivision.
 #include "lct/Curves.h"
+#include "lct/KeyLogs.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -169,4 +171,71 @@ TEST(Curves, SubdivisionMatchesExplicitFourPointRefinement)
     worst = std::max(worst, std::abs(evaluate(CurveScheme::Subdivision, times, p, t) - refined));
   }
   EXPECT_LT(worst, 1e-13);
+}
+
+TEST(Curves, StencilsBoundTheWeightedKeysAndTheReferences)
+{
+  // lct::curveStencil is what the interpolators validate when a key is added (every relative log
+  // a curve point may combine), so it must hold for any key times: every key curveWeights lists
+  // lies in the segment's stencil, and the keys of largest and (within the hand-over gap) second
+  // largest weight among its references.
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> gap(0.01, 3.0);
+  const CurveScheme schemes[] = { CurveScheme::Linear, CurveScheme::CatmullRom,
+    CurveScheme::BSpline, CurveScheme::Subdivision, CurveScheme::Bezier };
+  for (const CurveScheme s : schemes)
+  {
+    for (int n = 1; n <= 9; ++n)
+    {
+      for (int trial = 0; trial < 20; ++trial)
+      {
+        // Uniform, random and wildly uneven gaps (a short segment next to a long one stretches
+        // the Catmull-Rom tangents most).
+        std::vector<double> times(n);
+        times[0] = 0.0;
+        for (int i = 1; i < n; ++i)
+        {
+          times[i] = times[i - 1] + (trial == 0 ? 1.0 : (trial % 2 ? gap(rng) : gap(rng) * 1e-3));
+        }
+        const double span = times[n - 1] - times[0];
+        for (int k = 0; k <= 400; ++k)
+        {
+          // The key times exactly, and a grid between.
+          const double t = k <= n - 1 ? times[k] : times[0] + span * (k - n) / 400.0;
+          const lct::CurveWeights w = lct::curveWeights(s, times.data(), n, t);
+          const int segment = n == 1
+            ? 0
+            : std::min(
+                static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) -
+                  1,
+                n - 2);
+          const lct::CurveStencil stencil = lct::curveStencil(s, n, segment);
+          int a = -1;
+          int b = -1;
+          for (int j = 0; j < w.count; ++j)
+          {
+            EXPECT_GE(w.key[j], stencil.first) << static_cast<int>(s) << " n " << n << " t " << t;
+            EXPECT_LE(w.key[j], stencil.last) << static_cast<int>(s) << " n " << n << " t " << t;
+            if (a < 0 || w.weight[j] > w.weight[a])
+            {
+              b = a;
+              a = j;
+            }
+            else if (b < 0 || w.weight[j] > w.weight[b])
+            {
+              b = j;
+            }
+          }
+          ASSERT_GE(a, 0);
+          EXPECT_GE(w.key[a], stencil.firstReference) << static_cast<int>(s) << " t " << t;
+          EXPECT_LE(w.key[a], stencil.lastReference) << static_cast<int>(s) << " t " << t;
+          if (b >= 0 && w.weight[a] - w.weight[b] < lct::KeyLogs::kHandOver)
+          {
+            EXPECT_GE(w.key[b], stencil.firstReference) << static_cast<int>(s) << " t " << t;
+            EXPECT_LE(w.key[b], stencil.lastReference) << static_cast<int>(s) << " t " << t;
+          }
+        }
+      }
+    }
+  }
 }

@@ -2,12 +2,15 @@
 // the keys share; the hand-over is symmetric.
 #include "lct/Affine.h"
 #include "lct/KeyLogs.h"
+#include "lct/Keyframes.h"
 #include "lct/SO3.h"
 
 #include "RandomTransforms.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 using lct::Parametrisation;
@@ -122,4 +125,74 @@ TEST(KeyLogs, FailedUpdatesLeaveTheLogsUnchanged)
   ASSERT_EQ(logs.insert(1, quarter, true), lct::Status::Ok);
   EXPECT_EQ(logs.replace(1, halfTurn, true), lct::Status::NoRealLogarithm);
   EXPECT_EQ(logs.matrix(1), quarter);
+}
+
+TEST(KeyLogs, CurveNeedsAreCheckedAlikeInPlaceAndFromAWindow)
+{
+  // The interpolators check an edit either in the logs (KeyLogs::insert with CurveNeeds, when
+  // they are current) or by computing the logs it adds in a window of keys (lct::
+  // missingAfterEdit, when they are stale); both must accept exactly the key sets whose every
+  // combined log exists, which a full check of every segment decides. Keys: HardKey (steps
+  // beyond the conditioning limit, half turns without a real log), inserted at random times.
+  struct TimedKey
+  {
+    double Time;
+    Eigen::Matrix4d Matrix;
+  };
+  lct_test::RandomTransforms random(1920);
+  int refused = 0;
+  for (lct::CurveScheme scheme : { lct::CurveScheme::Linear, lct::CurveScheme::CatmullRom,
+         lct::CurveScheme::BSpline, lct::CurveScheme::Subdivision })
+  {
+    for (Parametrisation p : { Parametrisation::Polar, Parametrisation::MatrixLog })
+    {
+      for (bool absolute : { false, true })
+      {
+        const lct::CurveNeeds needs{ scheme, absolute };
+        lct::KeyLogs logs(p);
+        lct::Keyframes<TimedKey> keys;
+        for (int k = 0; k < 40; ++k)
+        {
+          const Eigen::Matrix4d m = random.HardKey(false);
+          const TimedKey key{ std::floor(random.Uniform(0.0, 1000.0)), m };
+          if (keys.find(key.Time))
+          {
+            continue;
+          }
+          // The window check, then the in-place one, then the whole set.
+          const auto window = lct::keyWindow(keys, key.Time, &key);
+          const lct::MissingLog fromWindow = lct::missingAfterEdit(
+            window, false, [](const TimedKey& t) { return t.Matrix; }, p, needs, true);
+          keys.flatten();
+          const int index =
+            static_cast<int>(std::lower_bound(keys.times().begin(), keys.times().end(), key.Time) -
+              keys.times().begin());
+          lct::MissingLog inPlace;
+          const lct::Status status = logs.insert(index, m, true, needs, &inPlace);
+          std::vector<Eigen::Matrix4d> all;
+          for (size_t i = 0; i < keys.size(); ++i)
+          {
+            all.push_back(keys[i].Matrix);
+          }
+          all.insert(all.begin() + index, m);
+          lct::KeyLogs full(p);
+          lct::MissingLog whole;
+          const lct::Status wholeStatus = full.build(all, p, true, needs, &whole);
+          EXPECT_EQ(fromWindow.missing(), inPlace.missing()) << k;
+          EXPECT_EQ(status == lct::Status::Ok, !inPlace.missing()) << k;
+          EXPECT_EQ(wholeStatus == lct::Status::Ok, !inPlace.missing()) << k;
+          if (inPlace.missing())
+          {
+            ++refused;
+            EXPECT_EQ(logs.size(), keys.size()); // unchanged
+            continue;
+          }
+          keys.set(key);
+          ASSERT_EQ(logs.size(), keys.size());
+          EXPECT_FALSE(logs.missingLog(needs).missing());
+        }
+      }
+    }
+  }
+  EXPECT_GT(refused, 40);
 }

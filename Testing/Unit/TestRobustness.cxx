@@ -6,6 +6,7 @@
 #include "vtkLogTransform.h"
 #include "vtkTransformInterpolatorLCT.h"
 
+#include "RandomTransforms.h"
 #include "VtkTestHelpers.h"
 
 #include "vtkCamera.h"
@@ -488,4 +489,383 @@ TEST(FuzzFindings, D29PolarInverseTwiceOfAnIllConditionedStateWithAHugeTranslati
   inverse->Update();
   EXPECT_TRUE(allFinite(inverse->GetMatrix()));
   EXPECT_EQ(errors->Count, 0) << errors->Last;
+}
+
+TEST(FuzzFindings, D30GetInverseOfEveryAcceptedStateSucceeds)
+{
+  // regression-D30-*: Polar coordinates with translation 3.3e303 are inverted and scaled by pi,
+  // which gives a linear part of condition ~1e8 under a translation of 6.5e304. The Polar state
+  // and its inverse are representable. SetParametrisationToMatrixLog() accepted it (translation
+  // coordinates 5.1e306), but the MatrixLog inverse exp(-c) overflows: GetInverse() (DeepCopy +
+  // Inverse() on a hidden object) reported an error and held the forward matrix. The inverse is
+  // now computed when a state is set, so the switch is refused and the Polar state kept, whose
+  // inverse GetInverse() holds.
+  const double c[12] = { 3.2973891538478729e+303, 3, 3, 0, 12.506695757449304, 0, 3, 3, 3, 3, 3,
+    -3 };
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(t->SetLogCoordinates(c), 1) << errors->Last;
+  t->Inverse();
+  ASSERT_EQ(t->Scale(3.1415926535897936), 1) << errors->Last;
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  double before[12];
+  t->GetLogCoordinates(before);
+  vtkNew<vtkMatrix4x4> forward;
+  forward->DeepCopy(t->GetMatrix());
+  const vtkMTimeType mtime = t->GetMTime();
+
+  EXPECT_EQ(t->SetParametrisationToMatrixLog(), 0);
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(contains(errors->Last,
+    "SetParametrisation: the inverse of the resulting transform "
+    "is not representable"))
+    << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "out of the range of double precision")) << errors->Last;
+  EXPECT_EQ(t->GetParametrisation(), vtkLogTransform::POLAR);
+  EXPECT_EQ(t->GetMTime(), mtime);
+  double after[12];
+  t->GetLogCoordinates(after);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(after[i], before[i]) << i;
+  }
+
+  // GetInverse() holds the inverse, without an error: its linear part inverts the forward one to
+  // eps ||A^-1|| ||A|| (the rounding of the product itself), and it maps the forward translation
+  // back to the origin (compared at unit size: A^-1 t itself is beyond DBL_MAX until it cancels).
+  vtkLinearTransform* inverse = t->GetLinearInverse();
+  inverse->Update();
+  EXPECT_EQ(errors->Count, 1) << errors->Last;
+  ASSERT_TRUE(allFinite(inverse->GetMatrix()));
+  const Eigen::Matrix4d m = lct_test::fromVtk(forward);
+  const Eigen::Matrix4d mi = lct_test::fromVtk(inverse->GetMatrix());
+  const Eigen::Matrix3d linear = mi.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d a = m.topLeftCorner<3, 3>();
+  EXPECT_LT((linear * a - Eigen::Matrix3d::Identity()).norm() / (linear.norm() * a.norm()), 1e-14);
+  const double size = m.topRightCorner<3, 1>().norm();
+  const Eigen::Vector3d origin =
+    linear * (m.topRightCorner<3, 1>() / size) + mi.topRightCorner<3, 1>() / size;
+  EXPECT_LT(origin.norm() / linear.norm(), 1e-6);
+
+  // Inverse() in place hands out the same inverse, and inverting twice restores the state
+  // exactly.
+  t->Inverse();
+  for (int i = 0; i < 16; ++i)
+  {
+    EXPECT_EQ(t->GetMatrix()->GetElement(i / 4, i % 4), mi(i / 4, i % 4)) << i;
+  }
+  t->Inverse();
+  t->GetLogCoordinates(after);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(after[i], before[i]) << i;
+  }
+  EXPECT_EQ(errors->Count, 1) << errors->Last;
+}
+
+TEST(Robustness, StatesWhoseInverseIsNotRepresentableAreRefusedWhereTheyAreSet)
+{
+  // The MatrixLog coordinates of the D30 state: exp(c) is representable, exp(-c), the inverse
+  // Inverse() hands out, overflows. Refused by every setter that would commit it, so Inverse()
+  // and GetInverse() of an accepted state never fail.
+  const double c[12] = { -5.1075920722584345e+306, -2.3420892390922072e+306, 2.317310579457469e+306,
+    1.8666002182014427, -28.415676084417324, -26.551045802320537, -45.609185203955938,
+    8.0329358333579854, 9.3016763984169568, 1.9243244262218102, -27.367795718768143,
+    -3.8797025644845782 };
+  vtkNew<vtkLogTransform> t;
+  t->SetParametrisationToMatrixLog();
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  EXPECT_EQ(t->SetLogCoordinates(c), 0);
+  EXPECT_TRUE(contains(errors->Last,
+    "SetLogCoordinates: the inverse of the resulting transform "
+    "is not representable"))
+    << errors->Last;
+  EXPECT_TRUE(t->GetMatrix()->IsIdentity());
+  // A quarter of it is accepted, with its inverse; half of it is not, so doubling the quarter is
+  // refused by Scale and by a linear combination (T (+) T) alike.
+  double quarter[12];
+  for (int i = 0; i < 12; ++i)
+  {
+    quarter[i] = 0.25 * c[i];
+  }
+  ASSERT_EQ(t->SetLogCoordinates(quarter), 1) << errors->Last;
+  EXPECT_EQ(t->Scale(2.0), 0);
+  EXPECT_TRUE(contains(errors->Last, "Scale: the inverse")) << errors->Last;
+  EXPECT_EQ(t->Add(t), 0);
+  EXPECT_TRUE(contains(errors->Last, "LinearCombination: the inverse")) << errors->Last;
+  double kept[12];
+  t->GetLogCoordinates(kept);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(kept[i], quarter[i]) << i;
+  }
+  EXPECT_EQ(errors->Count, 3);
+  vtkLinearTransform* inverse = t->GetLinearInverse();
+  inverse->Update();
+  EXPECT_TRUE(allFinite(inverse->GetMatrix()));
+  EXPECT_EQ(errors->Count, 3) << errors->Last;
+}
+
+namespace
+{
+/// The keys of regression-D19-prop-track-steps-two-keys-apart.json (lct-render's cube track):
+/// each within the conditioning limit (1e10, 1, 1e4) and joinable to its neighbours, but the
+/// step from the first to the last, two keys apart, has condition ~1e14. (In
+/// regression-D19-prop-track-missing-log.json, where D19 was found, the first key itself has
+/// condition 1e14, which the interpolator refuses on its own since.)
+vtkNew<vtkMatrix4x4> d19Key(int k)
+{
+  vtkNew<vtkTransform> t;
+  switch (k)
+  {
+    case 0:
+    {
+      const double m[16] = { 1, 0, 0, 0, 0, 18854, 0, 0, 8, 0, 1e10, 0, 0, 0, 0, 1 };
+      t->SetMatrix(m);
+      break;
+    }
+    case 1:
+      t->RotateWXYZ(340, 0, 1, 0);
+      break;
+    default:
+    {
+      t->RotateWXYZ(340, 0, 1, 0);
+      const double shear[16] = { 1, 0.3, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+      t->Concatenate(shear);
+      t->Scale(1e4, 1, 1);
+      break;
+    }
+  }
+  vtkNew<vtkMatrix4x4> m;
+  m->DeepCopy(t->GetMatrix());
+  return m;
+}
+
+const double kD19Times[3] = { 0.0, 2.0, 3.0 };
+} // namespace
+
+TEST(FuzzFindings, D19KeysWhoseCurveNeedsAMissingLogAreRefused)
+{
+  // lct-render accepted the cube track and stopped mid-render ("interpolating props.cube at
+  // t = 0.909 failed"): AddTransform checked only the steps to the neighbours, but a Spline point
+  // on the first segment combines the last key about the first. Now the key that completes such
+  // a stencil is refused, naming both keys, in any order of the keys; a Linear track takes the
+  // keys, and then refuses to become a Spline or to lose the middle key.
+  for (int order = 0; order < 2; ++order)
+  {
+    vtkNew<vtkTransformInterpolatorLCT> path;
+    vtkNew<ErrorCounter> errors;
+    path->AddObserver(vtkCommand::ErrorEvent, errors);
+    int accepted = 0;
+    for (int j = 0; j < 3; ++j)
+    {
+      const int k = order == 0 ? j : 2 - j;
+      accepted += path->AddTransform(kD19Times[k], d19Key(k));
+    }
+    EXPECT_EQ(accepted, 2);
+    EXPECT_EQ(errors->Count, 1);
+    EXPECT_TRUE(contains(errors->Last,
+      "the Spline curve combines the key at t = 3 with the key "
+      "at t = 0 as its reference"))
+      << errors->Last;
+    EXPECT_TRUE(contains(errors->Last, "has no Polar logarithm")) << errors->Last;
+    EXPECT_TRUE(contains(errors->Last, "ill-conditioned")) << errors->Last;
+    EXPECT_TRUE(contains(errors->Last, "key rejected")) << errors->Last;
+    EXPECT_FALSE(contains(errors->Last, "MatrixLog")) << errors->Last;
+    EXPECT_FALSE(contains(errors->Last, "use the")) << errors->Last;
+    // What was accepted interpolates everywhere.
+    vtkNew<vtkMatrix4x4> out;
+    for (int i = 0; i <= 60; ++i)
+    {
+      const double t = path->GetMinimumT() + (path->GetMaximumT() - path->GetMinimumT()) * i / 60.0;
+      EXPECT_EQ(path->InterpolateTransform(t, out), 1) << t << ": " << errors->Last;
+      EXPECT_TRUE(allFinite(out));
+    }
+    EXPECT_EQ(errors->Count, 1) << errors->Last;
+  }
+
+  vtkNew<vtkTransformInterpolatorLCT> linear;
+  linear->SetInterpolationTypeToLinear();
+  vtkNew<ErrorCounter> errors;
+  linear->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int k = 0; k < 3; ++k)
+  {
+    ASSERT_EQ(linear->AddTransform(kD19Times[k], d19Key(k)), 1) << errors->Last;
+  }
+  const vtkMTimeType mtime = linear->GetMTime();
+  EXPECT_EQ(linear->SetInterpolationTypeToSpline(), 0);
+  EXPECT_TRUE(contains(errors->Last, "SetInterpolationType(Spline): the Spline curve combines"))
+    << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "; unchanged.")) << errors->Last;
+  EXPECT_EQ(linear->GetInterpolationType(), vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_LINEAR);
+  EXPECT_EQ(linear->RemoveTransform(2.0), 0);
+  EXPECT_TRUE(contains(errors->Last,
+    "RemoveTransform(2): without this key, the Linear curve "
+    "combines the key at t = 3 with the key at t = 0"))
+    << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "not removed")) << errors->Last;
+  EXPECT_EQ(linear->GetNumberOfTransforms(), 3);
+  EXPECT_EQ(linear->GetMTime(), mtime);
+  EXPECT_EQ(errors->Count, 2);
+  vtkNew<vtkMatrix4x4> out;
+  for (int i = 0; i <= 30; ++i)
+  {
+    EXPECT_EQ(linear->InterpolateTransform(i / 10.0, out), 1) << i << ": " << errors->Last;
+  }
+  // The end key can go: nothing is joined by its removal.
+  EXPECT_EQ(linear->RemoveTransform(3.0), 1);
+  EXPECT_EQ(errors->Count, 2) << errors->Last;
+}
+
+TEST(Robustness, CurveMessagesNameTheKeysAndTheParametrisationInUse)
+{
+  // MatrixLog: keys turning 60 degrees apiece with a non-uniform scale; keys 0 and 3 are a half
+  // turn apart, which has no real matrix log, and a Subdivision point combines them (a Spline
+  // point does not: its stencil is 4 keys, about the middle two). Only there is switching to
+  // Polar advised.
+  auto turn = [](int k) {
+    vtkNew<vtkTransform> t;
+    t->RotateZ(60.0 * k);
+    t->Scale(2, 1, 1);
+    vtkNew<vtkMatrix4x4> m;
+    m->DeepCopy(t->GetMatrix());
+    return m;
+  };
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  path->SetParametrisationToMatrixLog();
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int k = 0; k < 4; ++k)
+  {
+    ASSERT_EQ(path->AddTransform(k, turn(k)), 1) << errors->Last;
+  }
+  EXPECT_EQ(path->SetInterpolationTypeToSubdivision(), 0);
+  EXPECT_TRUE(contains(errors->Last,
+    "the Subdivision curve combines the key at t = 3 with the key "
+    "at t = 0 as its reference, but the step from the key at "
+    "t = 0 to the key at t = 3 has no MatrixLog logarithm"))
+    << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "no real matrix logarithm")) << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "SetParametrisationToPolar")) << errors->Last;
+  // In Polar the same keys are fine for every type.
+  ASSERT_EQ(path->SetParametrisationToPolar(), 1) << errors->Last;
+  ASSERT_EQ(path->SetInterpolationTypeToSubdivision(), 1) << errors->Last;
+  // And back to MatrixLog is refused for the same pair, named as such.
+  EXPECT_EQ(path->SetParametrisationToMatrixLog(), 0);
+  EXPECT_TRUE(contains(errors->Last, "SetParametrisation(MatrixLog): the Subdivision curve"))
+    << errors->Last;
+  EXPECT_EQ(path->GetParametrisation(), vtkTransformInterpolatorLCT::POLAR);
+
+  // ConsistentRotation in MatrixLog needs each key's own log: a half turn with a non-uniform
+  // scale has none (the steps to its neighbours do).
+  vtkNew<vtkTransformInterpolatorLCT> spin;
+  spin->SetParametrisationToMatrixLog();
+  spin->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int k = 0; k < 4; ++k)
+  {
+    ASSERT_EQ(spin->AddTransform(k, turn(k)), 1) << errors->Last;
+  }
+  EXPECT_EQ(spin->ConsistentRotationOn(), 0);
+  EXPECT_TRUE(contains(errors->Last,
+    "ConsistentRotation combines the absolute MatrixLog "
+    "logarithm of every key, and the key at t = 3 has none"))
+    << errors->Last;
+  EXPECT_FALSE(spin->GetConsistentRotation());
+
+  // Polar: a step beyond the conditioning limit, no advice to switch to what is in use.
+  vtkNew<vtkTransformInterpolatorLCT> polar;
+  polar->SetInterpolationTypeToSubdivision();
+  polar->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(polar->AddTransform(kD19Times[0], d19Key(0)), 1);
+  ASSERT_EQ(polar->AddTransform(kD19Times[1], d19Key(1)), 1);
+  EXPECT_EQ(polar->AddTransform(kD19Times[2], d19Key(2)), 0);
+  EXPECT_TRUE(contains(errors->Last, "AddTransform at t = 3: the Subdivision curve"))
+    << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "has no Polar logarithm")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "MatrixLog")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "real matrix logarithm")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "SetParametrisation")) << errors->Last;
+}
+
+TEST(Robustness, EveryAcceptedKeySetInterpolatesEverywhere)
+{
+  // For every type, both parametrisations and both ConsistentRotation settings: keys drawn from
+  // moderate maps and from extreme ones (stretches up to 1e6.5, turns of a half turn with scale),
+  // added at random times in random order, removed, and with controls for Bezier. Whatever the
+  // interpolator accepts must interpolate at every t in its range: a failure may only be the
+  // in-between itself out of range, beyond the conditioning limit (a spline overshoot) or refused
+  // as inaccurate between ill-conditioned keys, never a missing logarithm.
+  lct_test::RandomTransforms random(1919);
+  int refusals = 0;
+  int evaluations = 0;
+  int failures = 0;
+  for (int type = 0; type <= vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER; ++type)
+  {
+    for (int parametrisation = 0; parametrisation < 2; ++parametrisation)
+    {
+      for (int consistent = 0; consistent < 2; ++consistent)
+      {
+        for (int trial = 0; trial < 6; ++trial)
+        {
+          SCOPED_TRACE(::testing::Message()
+            << "type " << type << ", parametrisation " << parametrisation << ", ConsistentRotation "
+            << consistent << ", trial " << trial);
+          vtkNew<vtkTransformInterpolatorLCT> path;
+          vtkNew<ErrorCounter> errors;
+          path->AddObserver(vtkCommand::ErrorEvent, errors);
+          ASSERT_EQ(path->SetInterpolationType(type), 1);
+          ASSERT_EQ(path->SetParametrisation(parametrisation), 1);
+          ASSERT_EQ(path->SetConsistentRotation(consistent), 1);
+          for (int k = 0; k < 14; ++k)
+          {
+            const Eigen::Matrix4d m = random.HardKey(true);
+            vtkNew<vtkMatrix4x4> key;
+            lct_test::toVtk(m, key);
+            const double t = std::floor(random.Uniform(0.0, 40.0)) / 4.0;
+            refusals += path->AddTransform(t, key) == 0;
+            if (random.Uniform(0.0, 1.0) < 0.15)
+            {
+              refusals += path->RemoveTransform(std::floor(random.Uniform(0.0, 40.0)) / 4.0) == 0;
+            }
+            if (type == vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BEZIER &&
+              random.Uniform(0.0, 1.0) < 0.2)
+            {
+              vtkNew<vtkMatrix4x4> control;
+              lct_test::toVtk(m * random.Affine(lct_test::TransformClass::Similarity), control);
+              path->SetBezierControls(t, control, nullptr); // refused where no key is at t
+            }
+          }
+          const int before = errors->Count;
+          vtkNew<vtkMatrix4x4> out;
+          for (int i = 0; i <= 200 && path->GetNumberOfTransforms() > 0; ++i)
+          {
+            const double t =
+              path->GetMinimumT() + (path->GetMaximumT() - path->GetMinimumT()) * i / 200.0;
+            ++evaluations;
+            if (!path->InterpolateTransform(t, out))
+            {
+              EXPECT_TRUE(contains(errors->Last, "the combination of the keys failed") ||
+                contains(errors->Last, "the absolute logarithms (ConsistentRotation) failed"))
+                << errors->Last;
+              EXPECT_FALSE(contains(errors->Last, "defect")) << errors->Last;
+              EXPECT_FALSE(contains(errors->Last, "logarithm:")) << errors->Last;
+            }
+            else
+            {
+              EXPECT_TRUE(allFinite(out));
+            }
+          }
+          failures += errors->Count - before;
+        }
+      }
+    }
+  }
+  // The draws do reach refusals (the checks are exercised), and most calls interpolate: the
+  // in-betweens refused involve the keys of condition up to 1e13 (a quarter of the draws), whose
+  // relative steps lose the smallest stretch (InaccurateResult, lct/KeyLogs.h).
+  EXPECT_GT(refusals, 50);
+  EXPECT_GT(evaluations, 20000);
+  EXPECT_LT(failures, evaluations / 4);
 }
