@@ -8,7 +8,8 @@
 //  - LCT: vtkLCT's lct::sequencePCA: Polar logs continuous in time (each taken against the
 //    previous frame's), centred at each joint's mean log (tangent PCA), the root joint factored
 //    out and kept exactly.
-// Every data row is rebuilt, forward kinematics (BVH.h) gives the world positions of every joint
+// The clips are read by the module's vtkSkeletonAnimationReader (assimp). Every data row is
+// rebuilt, forward kinematics (lct::worldPositions) gives the world positions of every joint
 // and End Site, and the error is their distance to the recorded ones: mean, 99th percentile and
 // max, in % of the skeleton height H (the y extent of the rest pose, every channel 0).
 //
@@ -21,7 +22,11 @@
 // Plain program: prints markdown. Usage: BenchMotionPCA [--check] [BVH directory]. --check exits
 // 1 unless LCT with every component reproduces every file to 1e-6 % of H (ctest runs it) and 77
 // without the data; --benchmark_* flags (scripts/bench passes them) are ignored.
-#include "BVH.h"
+#include "vtkSkeletonAnimationReader.h"
+
+#include <vtkNew.h>
+
+#include "lct/MotionError.h"
 
 #include "lct/LogBasis.h"
 #include "lct/Parametrisation.h"
@@ -34,86 +39,82 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 namespace
 {
-using lct_bench::BVHMotion;
-using lct_bench::Matrix4;
 constexpr int kSkipped = 77;
 const int kComponents[] = { 5, 10, 20, 40 };
 
-Eigen::Matrix4d toEigen(const Matrix4& m)
-{
-  return Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m.data());
-}
+using Matrix4 = Eigen::Matrix4d;
 
-Matrix4 fromEigen(const Eigen::Matrix4d& m)
+const Eigen::Matrix4d& toEigen(const Matrix4& m)
 {
-  Matrix4 out;
-  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data()) = m;
-  return out;
+  return m;
 }
 
 struct Clip
 {
   std::string name;
-  BVHMotion motion;
-  std::vector<int> animated; ///< joints with channels (End Sites have none)
-  int root = 0;              ///< index into animated of the ROOT (depth-first order: the first)
-  std::vector<std::vector<Matrix4>> locals;   ///< [frame][joint] for every joint
-  std::vector<std::vector<double>> positions; ///< [frame] x, y, z of every joint
+  lct::SkeletalAnimation animation; ///< as vtkSkeletonAnimationReader reads it
+  int channels = 0;                 ///< per data row, from the file's CHANNELS lines
+  std::vector<int> animated;        ///< joints with motion (End Sites have none)
+  int root = 0;                     ///< index into animated of the ROOT (the first)
+  std::vector<std::vector<Matrix4>> locals; ///< [frame][joint] for every joint
+  std::vector<double> reference;            ///< lct::worldPositions of the recording
   double height = 0.0;
 };
 
+/// Channels per data row from the CHANNELS lines (the reader keeps only the motion).
+int channelCount(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string word;
+  int channels = 0;
+  while (in >> word && word != "MOTION")
+  {
+    int n = 0;
+    if (word == "CHANNELS" && in >> n)
+    {
+      channels += n;
+    }
+  }
+  return channels;
+}
+
 bool load(const std::string& path, Clip& clip)
 {
-  auto parsed = lct_bench::LoadBVH(path);
-  if (!parsed.Ok())
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  if (!reader->GetAnimation())
   {
-    std::fprintf(stderr, "%s: %s\n", path.c_str(), parsed.error.c_str());
+    std::fprintf(stderr, "%s: not readable\n", path.c_str());
     return false;
   }
   clip.name = std::filesystem::path(path).filename().string();
-  clip.motion = std::move(parsed.motion);
-  const BVHMotion& m = clip.motion;
-  for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+  clip.animation = *reader->GetAnimation();
+  clip.channels = channelCount(path);
+  const lct::SkeletalAnimation& a = clip.animation;
+  for (int j = 0; j < a.jointCount(); ++j)
   {
-    if (!m.joints[j].channels.empty())
+    if (!a.joints[static_cast<std::size_t>(j)].endSite)
     {
       clip.animated.push_back(j);
     }
   }
-  std::vector<Matrix4> world;
-  std::vector<double> restPositions;
-  {
-    const std::vector<double> zero(static_cast<std::size_t>(m.channelCount), 0.0);
-    std::vector<Matrix4> rest;
-    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
-    {
-      rest.push_back(lct_bench::LocalTransform(m, j, zero.data()));
-    }
-    lct_bench::ForwardKinematics(m, rest, world, restPositions);
-    double low = 1e300, high = -1e300;
-    for (std::size_t i = 1; i < restPositions.size(); i += 3)
-    {
-      low = std::min(low, restPositions[i]);
-      high = std::max(high, restPositions[i]);
-    }
-    clip.height = high - low;
-  }
-  for (int f = 0; f < m.frameCount; ++f)
+  clip.height = lct::restPoseHeight(a);
+  clip.reference = lct::worldPositions(a);
+  for (int f = 0; f < a.frames; ++f)
   {
     std::vector<Matrix4> locals;
-    for (int j = 0; j < static_cast<int>(m.joints.size()); ++j)
+    for (int j = 0; j < a.jointCount(); ++j)
     {
-      locals.push_back(lct_bench::LocalTransform(m, j, m.Frame(f)));
+      locals.push_back(a.local(f, j));
     }
-    std::vector<double> p;
-    lct_bench::ForwardKinematics(m, locals, world, p);
     clip.locals.push_back(std::move(locals));
-    clip.positions.push_back(std::move(p));
   }
   return true;
 }
@@ -126,32 +127,16 @@ struct Error
 /// FK error of rebuilt local transforms of the animated joints ([frame][animated joint]).
 Error fkError(const Clip& clip, const std::vector<std::vector<Eigen::Matrix4d>>& rebuilt)
 {
-  std::vector<double> distances;
-  std::vector<Matrix4> world;
-  std::vector<double> p;
-  for (int f = 0; f < clip.motion.frameCount; ++f)
+  lct::SkeletalAnimation approximation = clip.animation;
+  for (int f = 0; f < approximation.frames; ++f)
   {
-    std::vector<Matrix4> locals = clip.locals[static_cast<std::size_t>(f)];
     for (std::size_t a = 0; a < clip.animated.size(); ++a)
     {
-      locals[static_cast<std::size_t>(clip.animated[a])] = fromEigen(rebuilt[f][a]);
-    }
-    lct_bench::ForwardKinematics(clip.motion, locals, world, p);
-    const std::vector<double>& q = clip.positions[static_cast<std::size_t>(f)];
-    for (std::size_t i = 0; i < p.size(); i += 3)
-    {
-      distances.push_back(std::hypot(p[i] - q[i], p[i + 1] - q[i + 1], p[i + 2] - q[i + 2]));
+      approximation.locals[static_cast<std::size_t>(f) * approximation.joints.size() +
+        static_cast<std::size_t>(clip.animated[a])] = rebuilt[static_cast<std::size_t>(f)][a];
     }
   }
-  Error e;
-  for (double d : distances)
-  {
-    e.mean += d;
-  }
-  e.mean /= static_cast<double>(distances.size());
-  std::sort(distances.begin(), distances.end());
-  e.p99 = distances[static_cast<std::size_t>(0.99 * (distances.size() - 1))];
-  e.max = distances.back();
+  const lct::PositionErrorStatistics e = lct::positionErrors(clip.reference, approximation);
   const double scale = 100.0 / clip.height;
   return { e.mean * scale, e.p99 * scale, e.max * scale };
 }
@@ -197,7 +182,7 @@ struct Row
 /// Alexa's scheme: uncentred SVD of the principal MatrixLog logs of every animated joint.
 std::vector<Row> alexa(const Clip& clip, bool& ok)
 {
-  const int frames = clip.motion.frameCount;
+  const int frames = clip.animation.frames;
   const int joints = static_cast<int>(clip.animated.size());
   std::vector<lct::LogCoords> logs;
   ok = true;
@@ -260,7 +245,7 @@ std::vector<Row> alexa(const Clip& clip, bool& ok)
     const double alexaFactor =
       double(frames) * joints * 16 / (double(frames) * k + joints * 16.0 * k);
     const double honest =
-      double(frames) * clip.motion.channelCount / (double(frames) * k + double(stored) * k);
+      double(frames) * clip.channels / (double(frames) * k + double(stored) * k);
     out.push_back({ r, fkError(clip, rebuilt), alexaFactor, honest, seconds });
   }
   return out;
@@ -269,7 +254,7 @@ std::vector<Row> alexa(const Clip& clip, bool& ok)
 /// vtkLCT's scheme: Polar logs continuous in time, centred, root factored out.
 std::vector<Row> lctScheme(const Clip& clip, bool allComponents, Error* full)
 {
-  const int frames = clip.motion.frameCount;
+  const int frames = clip.animation.frames;
   const int joints = static_cast<int>(clip.animated.size()) - 1; // without the root
   std::vector<int> analysed;
   for (std::size_t a = 0; a < clip.animated.size(); ++a)
@@ -325,7 +310,7 @@ std::vector<Row> lctScheme(const Clip& clip, bool allComponents, Error* full)
     const int k = std::min(r, pca.value.size());
     const double alexaFactor =
       double(frames) * (joints + 1) * 16 / (double(frames) * k + (joints + 1) * 16.0 * k);
-    const double honest = double(frames) * clip.motion.channelCount /
+    const double honest = double(frames) * clip.channels /
       (double(frames) * (k + 6) + double(varying) * (k + 1));
     out.push_back({ r, rebuild(k), alexaFactor, honest, seconds });
   }
@@ -388,7 +373,7 @@ int main(int argc, char* argv[])
     }
     any = true;
     std::printf("| **%s** | %d frames, %zu joints, %d channels, H = %.2f | | | | | | |\n",
-      clip.name.c_str(), clip.motion.frameCount, clip.animated.size(), clip.motion.channelCount,
+      clip.name.c_str(), clip.animation.frames, clip.animated.size(), clip.channels,
       clip.height);
     bool alexaOk = false;
     const auto a = alexa(clip, alexaOk);
