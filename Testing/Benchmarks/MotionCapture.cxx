@@ -2,14 +2,14 @@
 // CMU BVH recording from every k-th frame?
 //
 // For each file and k in {4, 8, 16, 32}: every animated joint gets one interpolator per method,
-// holding that joint's local transform (BVH.h) at frames 0, k, 2k, ... and the last frame (key
+// holding that joint's local transform (read by vtkSkeletonAnimationReader) at frames 0, k, 2k, ... and the last frame (key
 // time = frame index). The frames are interpolated back, forward kinematics gives the joint world
 // positions, and the error is the distance to the recorded positions in % of the skeleton height
 // (max over frames of the y extent of the joints), over all joints (End Sites included) and the
 // evaluated frames: mean and max. Also measured: the time to load the keys (AddTransform, plus
 // the first InterpolateTransform, where vtkTransformInterpolator builds its curves) and the time
 // per InterpolateTransform call (including reading the 4x4 out). Sanity checks: FK against a
-// vtkTransform chain, every frame a key (on a clip), error at the key frames. Plain program (no
+// vtkTransform chain of the same local transforms, every frame a key (on a clip), error at the key frames. Plain program (no
 // Google Benchmark): prints markdown.
 //
 // Sampling: every s-th frame is evaluated (0, s, 2s, ...; the same frames for every method and
@@ -22,13 +22,14 @@
 // "skipped" and exits 0 (77 with --check). Usage: BenchMotionCapture [--stride S] [--check]
 // [BVH directory]; --check exits 1 when LCT Spline or Subdivision misses the goal (ctest runs it);
 // --benchmark_* flags (scripts/bench passes them to every Bench* program) are ignored.
-#include "BVH.h"
+#include "vtkSkeletonAnimationReader.h"
 #include "vtkTransformInterpolatorLCT.h"
 
 #include "lct/Affine.h"
 #include "lct/Combination.h"
 #include "lct/Curves.h"
 #include "lct/Parametrisation.h"
+#include "lct/Skeleton.h"
 
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
@@ -37,7 +38,10 @@
 #include <vtkTransform.h>
 #include <vtkTransformInterpolator.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -51,8 +55,9 @@
 
 namespace
 {
-using lct_bench::BVHMotion;
-using lct_bench::Matrix4;
+/// A 4x4 matrix, row-major (vtkMatrix4x4's layout).
+using Matrix4 = std::array<double, 16>;
+using RowMajor4x4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
 
 const int kSteps[] = { 4, 8, 16, 32 };
@@ -270,14 +275,15 @@ private:
 struct Recording
 {
   std::string name;
-  BVHMotion motion;
-  std::vector<int> animated;     ///< joints with channels (the interpolated ones)
+  lct::SkeletalAnimation animation; ///< as vtkSkeletonAnimationReader reads it
+  std::vector<int> animated;     ///< joints with motion (the interpolated ones)
   std::vector<Matrix4> locals;   ///< frame x joint, recorded local transforms
   std::vector<double> positions; ///< frame x joint x 3, recorded world positions
   double height = 0.0;           ///< max over frames of (max y - min y) of the joint positions
   bool droppedRestPose = false;  ///< frame 0 was a rest pose and was dropped
 
-  int Joints() const { return static_cast<int>(this->motion.joints.size()); }
+  int Frames() const { return this->animation.frames; }
+  int Joints() const { return this->animation.jointCount(); }
   const Matrix4& Local(int frame, int joint) const
   {
     return this->locals[static_cast<std::size_t>(frame) * this->Joints() + joint];
@@ -288,28 +294,45 @@ struct Recording
   }
 };
 
-/// Largest joint displacement between consecutive frames: (frame 0 -> 1, any later pair).
-std::pair<double, double> LargestJumps(const BVHMotion& m)
+/// World positions of every joint (x, y, z each) from local transforms, parents first.
+void ForwardKinematics(
+  const lct::SkeletalAnimation& a, const std::vector<Matrix4>& local, std::vector<double>& p)
 {
-  const int n = static_cast<int>(m.joints.size());
-  std::vector<Matrix4> local(n), world;
-  std::vector<double> p, previous;
-  double first = 0.0, rest = 0.0;
-  for (int f = 0; f < m.frameCount; ++f)
+  const int n = a.jointCount();
+  std::vector<Eigen::Matrix4d> world(static_cast<std::size_t>(n));
+  p.resize(static_cast<std::size_t>(3 * n));
+  for (int j = 0; j < n; ++j)
   {
+    const Eigen::Matrix4d m = Eigen::Map<const RowMajor4x4>(local[static_cast<std::size_t>(j)].data());
+    const int parent = a.joints[static_cast<std::size_t>(j)].parent;
+    world[static_cast<std::size_t>(j)] = parent < 0 ? m : Eigen::Matrix4d(world[static_cast<std::size_t>(parent)] * m);
+    for (int i = 0; i < 3; ++i)
+    {
+      p[static_cast<std::size_t>(3 * j + i)] = world[static_cast<std::size_t>(j)](i, 3);
+    }
+  }
+}
+
+/// Largest joint displacement between consecutive frames: (frame 0 -> 1, any later pair).
+std::pair<double, double> LargestJumps(const lct::SkeletalAnimation& a)
+{
+  const int n = a.jointCount();
+  std::vector<Eigen::Matrix4d> world;
+  std::vector<Eigen::Vector3d> previous(static_cast<std::size_t>(n));
+  double first = 0.0, rest = 0.0;
+  for (int f = 0; f < a.frames; ++f)
+  {
+    lct::worldTransforms(a, f, world);
     for (int j = 0; j < n; ++j)
     {
-      local[j] = lct_bench::LocalTransform(m, j, m.Frame(f));
+      const Eigen::Vector3d p = world[static_cast<std::size_t>(j)].block<3, 1>(0, 3);
+      if (f > 0)
+      {
+        double& largest = (f == 1) ? first : rest;
+        largest = std::max(largest, (p - previous[static_cast<std::size_t>(j)]).norm());
+      }
+      previous[static_cast<std::size_t>(j)] = p;
     }
-    lct_bench::ForwardKinematics(m, local, world, p);
-    for (int j = 0; f > 0 && j < n; ++j)
-    {
-      const double d = std::hypot(p[3 * j] - previous[3 * j], p[3 * j + 1] - previous[3 * j + 1],
-        p[3 * j + 2] - previous[3 * j + 2]);
-      double& largest = (f == 1) ? first : rest;
-      largest = std::max(largest, d);
-    }
-    previous.swap(p);
   }
   return { first, rest };
 }
@@ -317,36 +340,37 @@ std::pair<double, double> LargestJumps(const BVHMotion& m)
 /// The cgspeed CMU conversions start with a reference pose (near T-pose) that is not part of the
 /// motion: frame 0 -> 1 jumps by half the height. Drops frame 0 when that jump is more than 4x
 /// the largest frame-to-frame jump of the rest of the recording; returns whether it did.
-bool DropLeadingRestPose(BVHMotion& m)
+bool DropLeadingRestPose(lct::SkeletalAnimation& a)
 {
-  if (m.frameCount <= 3)
+  if (a.frames <= 3)
   {
     return false;
   }
-  const auto jumps = LargestJumps(m);
+  const auto jumps = LargestJumps(a);
   if (jumps.first <= 4.0 * jumps.second)
   {
     return false;
   }
-  m.values.erase(m.values.begin(), m.values.begin() + m.channelCount);
-  --m.frameCount;
+  a.locals.erase(a.locals.begin(), a.locals.begin() + static_cast<std::ptrdiff_t>(a.joints.size()));
+  --a.frames;
   return true;
 }
 
 bool Prepare(const std::string& path, Recording& rec, std::string& message)
 {
-  lct_bench::BVHResult parsed = lct_bench::LoadBVH(path);
-  if (!parsed.Ok())
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  if (!reader->GetAnimation())
   {
-    message = parsed.error;
+    message = path + ": not readable by vtkSkeletonAnimationReader";
     return false;
   }
-  message = parsed.warning;
   rec.name = std::filesystem::path(path).stem().string();
-  rec.motion = std::move(parsed.motion);
-  rec.droppedRestPose = DropLeadingRestPose(rec.motion);
-  const BVHMotion& m = rec.motion;
-  if (m.frameCount < 2)
+  rec.animation = *reader->GetAnimation();
+  rec.droppedRestPose = DropLeadingRestPose(rec.animation);
+  const lct::SkeletalAnimation& a = rec.animation;
+  if (a.frames < 2)
   {
     message = path + ": fewer than two frames";
     return false;
@@ -354,22 +378,22 @@ bool Prepare(const std::string& path, Recording& rec, std::string& message)
   const int n = rec.Joints();
   for (int j = 0; j < n; ++j)
   {
-    if (!m.joints[j].channels.empty())
+    if (!a.joints[static_cast<std::size_t>(j)].endSite)
     {
       rec.animated.push_back(j);
     }
   }
-  rec.locals.resize(static_cast<std::size_t>(m.frameCount) * n);
-  rec.positions.resize(static_cast<std::size_t>(m.frameCount) * 3 * n);
-  std::vector<Matrix4> local(n), world;
+  rec.locals.resize(static_cast<std::size_t>(a.frames) * n);
+  rec.positions.resize(static_cast<std::size_t>(a.frames) * 3 * n);
+  std::vector<Matrix4> local(static_cast<std::size_t>(n));
   std::vector<double> p;
-  for (int f = 0; f < m.frameCount; ++f)
+  for (int f = 0; f < a.frames; ++f)
   {
     for (int j = 0; j < n; ++j)
     {
-      local[j] = lct_bench::LocalTransform(m, j, m.Frame(f));
+      Eigen::Map<RowMajor4x4>(local[static_cast<std::size_t>(j)].data()) = a.local(f, j);
     }
-    lct_bench::ForwardKinematics(m, local, world, p);
+    ForwardKinematics(a, local, p);
     std::copy(local.begin(), local.end(), rec.locals.begin() + static_cast<std::size_t>(f) * n);
     std::copy(p.begin(), p.end(), rec.positions.begin() + static_cast<std::size_t>(f) * 3 * n);
     double lo = p[1], hi = p[1];
@@ -392,62 +416,35 @@ bool Prepare(const std::string& path, Recording& rec, std::string& message)
 Recording Clip(const Recording& rec, int frames)
 {
   Recording clip = rec;
-  BVHMotion& m = clip.motion;
-  m.frameCount = std::min(m.frameCount, frames);
-  m.values.resize(static_cast<std::size_t>(m.frameCount) * m.channelCount);
-  clip.locals.resize(static_cast<std::size_t>(m.frameCount) * clip.Joints());
-  clip.positions.resize(static_cast<std::size_t>(m.frameCount) * 3 * clip.Joints());
+  lct::SkeletalAnimation& a = clip.animation;
+  a.frames = std::min(a.frames, frames);
+  a.locals.resize(static_cast<std::size_t>(a.frames) * a.joints.size());
+  clip.locals.resize(static_cast<std::size_t>(a.frames) * clip.Joints());
+  clip.positions.resize(static_cast<std::size_t>(a.frames) * 3 * clip.Joints());
   return clip;
 }
 
-/// Max distance between the FK of BVH.h and the same chain built with vtkTransform
-/// (PreMultiply: Translate, then RotateX/Y/Z in channel order), over a few frames.
+/// Max distance between this file's forward kinematics and the same chain composed by VTK
+/// (vtkTransform, PreMultiply: the parent's matrix, then Concatenate the local one), over a few
+/// frames. (The reader's local transforms against the BVH text are Unit.SkeletonReader's.)
 double CheckConventionAgainstVtk(const Recording& rec)
 {
-  const BVHMotion& m = rec.motion;
   double worst = 0.0;
   const int n = rec.Joints();
-  for (int f : { 0, m.frameCount / 2, m.frameCount - 1 })
+  for (int f : { 0, rec.Frames() / 2, rec.Frames() - 1 })
   {
-    std::vector<vtkSmartPointer<vtkTransform>> world(n);
+    std::vector<vtkSmartPointer<vtkTransform>> world(static_cast<std::size_t>(n));
     for (int j = 0; j < n; ++j)
     {
-      const lct_bench::BVHJoint& joint = m.joints[j];
       auto t = vtkSmartPointer<vtkTransform>::New();
       t->PreMultiply();
-      if (joint.parent >= 0)
+      const int parent = rec.animation.joints[static_cast<std::size_t>(j)].parent;
+      if (parent >= 0)
       {
-        t->SetMatrix(world[joint.parent]->GetMatrix());
+        t->SetMatrix(world[static_cast<std::size_t>(parent)]->GetMatrix());
       }
-      double p[3] = { joint.offset[0], joint.offset[1], joint.offset[2] };
-      for (std::size_t c = 0; c < joint.channels.size(); ++c)
-      {
-        const int axis = static_cast<int>(joint.channels[c]);
-        if (axis < 3)
-        {
-          p[axis] += m.Frame(f)[joint.firstChannel + c];
-        }
-      }
-      t->Translate(p);
-      for (std::size_t c = 0; c < joint.channels.size(); ++c)
-      {
-        const double v = m.Frame(f)[joint.firstChannel + c];
-        switch (joint.channels[c])
-        {
-          case lct_bench::BVHChannel::Xrotation:
-            t->RotateX(v);
-            break;
-          case lct_bench::BVHChannel::Yrotation:
-            t->RotateY(v);
-            break;
-          case lct_bench::BVHChannel::Zrotation:
-            t->RotateZ(v);
-            break;
-          default:
-            break;
-        }
-      }
-      world[j] = t;
+      t->Concatenate(rec.Local(f, j).data());
+      world[static_cast<std::size_t>(j)] = t;
       double origin[3] = { 0, 0, 0 }, q[3];
       t->TransformPoint(origin, q);
       const double* r = rec.Positions(f) + 3 * j;
@@ -486,7 +483,7 @@ Stats Run(const Recording& rec, const Method& method, int step, int stride)
 {
   const int n = rec.Joints();
   const int animated = static_cast<int>(rec.animated.size());
-  const int last = rec.motion.frameCount - 1;
+  const int last = rec.Frames() - 1;
   std::vector<int> keys;
   for (int f = 0; f <= last; f += step)
   {
@@ -503,7 +500,7 @@ Stats Run(const Recording& rec, const Method& method, int step, int stride)
     vtkObject::GlobalWarningDisplayOff(); // rejections are counted, not printed per key
   }
   Stats s;
-  std::vector<Matrix4> local(n), world;
+  std::vector<Matrix4> local(n);
   std::vector<double> p;
   for (int j = 0; j < n; ++j)
   {
@@ -541,7 +538,7 @@ Stats Run(const Recording& rec, const Method& method, int step, int stride)
     s.seconds += Seconds(t0);
     s.calls += animated;
     ++s.frames;
-    lct_bench::ForwardKinematics(rec.motion, local, world, p);
+    ForwardKinematics(rec.animation, local, p);
     const double* r = rec.Positions(f);
     for (int j = 0; j < n; ++j)
     {
@@ -797,7 +794,7 @@ int main(int argc, char* argv[])
   std::printf("| file | frames | joints (animated) | height |\n|---|---|---|---|\n");
   for (const Recording& rec : recordings)
   {
-    std::printf("| %s | %d%s | %d (%zu) | %.3f |\n", rec.name.c_str(), rec.motion.frameCount,
+    std::printf("| %s | %d%s | %d (%zu) | %.3f |\n", rec.name.c_str(), rec.Frames(),
       rec.droppedRestPose ? " (rest-pose frame 0 dropped)" : "", rec.Joints(), rec.animated.size(),
       rec.height);
   }
@@ -809,9 +806,9 @@ int main(int argc, char* argv[])
     // On a clip: with a key per frame, loading would take as long as a method's whole run.
     const Recording clip = Clip(rec, kEveryFrameClip);
     const Stats all = Run(clip, kMethods[kLctLinear], 1, 1);
-    std::printf("- %s: BVH.h FK vs a vtkTransform chain: max %.2e %%; LCT Linear with every frame "
+    std::printf("- %s: FK vs a vtkTransform chain: max %.2e %%; LCT Linear with every frame "
                 "a key (first %d frames): max error %.2e %%\n",
-      rec.name.c_str(), CheckConventionAgainstVtk(rec), clip.motion.frameCount, all.max);
+      rec.name.c_str(), CheckConventionAgainstVtk(rec), clip.Frames(), all.max);
   }
   std::fflush(stdout);
 
@@ -832,12 +829,12 @@ int main(int argc, char* argv[])
         for (const auto& rejected : s.rejected)
         {
           rejectedJoints[kMethods[m].name].insert(
-            rec.name + ":" + rec.motion.joints[rec.animated[rejected.first]].name);
+            rec.name + ":" + rec.animation.joints[static_cast<std::size_t>(rec.animated[rejected.first])].name);
         }
         if (m == 0 && i == 0)
         {
           framesEvaluated += s.frames;
-          framesTotal += rec.motion.frameCount;
+          framesTotal += rec.Frames();
         }
       }
     }

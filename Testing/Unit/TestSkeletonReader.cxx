@@ -1,7 +1,7 @@
 // vtkSkeletonAnimationReader on the CMU and boxing BVH files of assimp-testmodels: the forward
 // kinematics of what it reads against a direct evaluation of the BVH text (Testing/Benchmarks/
-// BVH.h, an independent parser), TIME_STEPS through the pipeline, and unreadable files.
-#include "../Benchmarks/BVH.h"
+// BVHOracle.h, an independent parser kept as the oracle of this test only), TIME_STEPS through the pipeline, and unreadable files.
+#include "BVHOracle.h"
 #include "VtkTestHelpers.h"
 
 #include "lct/BVHWriter.h"
@@ -79,7 +79,7 @@ TEST_P(SkeletonReaderOnClips, ForwardKinematicsMatchesADirectEvaluationOfTheFile
   const lct::SkeletalAnimation* a = w.reader->GetAnimation();
   ASSERT_NE(a, nullptr);
   ASSERT_EQ(a->jointCount(), static_cast<int>(m.joints.size()));
-  // Every data row (Boxing_Toes has one more than its Frames line says, which BVH.h skips).
+  // Every data row (Boxing_Toes has one more than its Frames line says, which BVHOracle.h skips).
   EXPECT_GE(a->frames, m.frameCount);
   EXPECT_LE(a->frames, m.frameCount + 1);
   EXPECT_NEAR(a->frameTime, m.frameTime, 1e-7 * m.frameTime);

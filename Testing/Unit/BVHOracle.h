@@ -1,7 +1,8 @@
 /**
- * @file BVH.h
+ * @file BVHOracle.h
  * @brief A small reader for Biovision hierarchy (BVH) motion-capture files, and their forward
- *        kinematics. Header-only, no dependencies beyond the standard library.
+ *        kinematics: the independent oracle of Unit.SkeletonReader (the module reads motion
+ *        through vtkSkeletonAnimationReader only). Header-only, standard library only.
  *
  * Format read:
  *
