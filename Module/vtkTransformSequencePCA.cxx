@@ -1,5 +1,7 @@
 #include "vtkTransformSequencePCA.h"
 
+#include "lct/Affine.h"
+
 #include "lct/Format.h"
 #include "lct/LogBasis.h"
 #include "lct/Parametrisation.h"
@@ -221,6 +223,18 @@ int vtkTransformSequencePCA::Compute()
     const int s = slot[static_cast<std::size_t>(c)];
     if (s < 0)
     {
+      // The root channel is kept as it is, not analysed: it must be a valid transform all the
+      // same, or GetReconstructedTransform would hand back what no log accepts (A5).
+      for (int f = 0; f < frames; ++f)
+      {
+        const lct::Status valid = lct::validateAffine(in.At(f, c));
+        if (valid != lct::Status::Ok)
+        {
+          vtkErrorMacro(<< "Compute: frame " << f << ", root channel " << c << ": "
+                        << lct::describe(valid) << ".");
+          return 0;
+        }
+      }
       continue;
     }
     for (int f = 0; f < frames; ++f)

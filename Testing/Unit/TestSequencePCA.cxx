@@ -426,3 +426,37 @@ TEST(SequencePCA, ConstantDataHasNoComponentAndReconstructsToTheMean)
   }
   EXPECT_EQ(pca.value.explainedFraction(0), 0.0);
 }
+
+// FuzzAnalysis A5: the root channel is factored out and not logged, so nothing checked it: a
+// projective bottom row (a denormal 1.9e-319 in the fuzz input) or a reflection was accepted and
+// handed back by GetReconstructedTransform as if it were a transform.
+TEST(SequencePCA, AnInvalidRootChannelIsRefused)
+{
+  RandomTransforms random(35);
+  const int frames = 6, channels = 3;
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    auto all = animation(random, frames, channels, lct::Parametrisation::MatrixLog);
+    Eigen::Matrix4d& root = all[static_cast<std::size_t>(4 * channels)];
+    if (variant == 0)
+    {
+      root(3, 0) = 1.8665306034236453e-319;
+    }
+    else if (variant == 1)
+    {
+      root.row(0) = -root.row(0);
+    }
+    else
+    {
+      root(0, 3) = std::numeric_limits<double>::quiet_NaN();
+    }
+    Watched w;
+    w.Load(all, frames, channels);
+    w.pca->SetParametrisationToMatrixLog();
+    w.pca->SetRootChannel(0);
+    EXPECT_EQ(w.pca->Compute(), 0) << variant;
+    EXPECT_NE(w.errors->Last.find("frame 4, root channel 0"), std::string::npos) << w.errors->Last;
+    vtkNew<vtkMatrix4x4> m;
+    EXPECT_EQ(w.pca->GetReconstructedTransform(4, 0, 0, m), 0);
+  }
+}
