@@ -75,7 +75,7 @@ struct MotionCompressionOptions
   double tolerance = 0.0;         ///< max world-position error, in the units of the file
   int degree = 0;                 ///< 0: per track the better of 1 and 3; else 1, 2 or 3
   double quantisationShare = 0.8; ///< q above, in (0, 1)
-  bool searchBudget = true;       ///< false: a single pass at the safe beta (no search)
+  bool searchBudget = true;       ///< false: only the first budget that passes (no search)
   int searchSteps = 4;            ///< bisection steps of the beta search
   /// 2: rotation tracks correct the decoded positions below them; 1: orientations only; 0: each
   /// track fitted to its own input (see step 3 above).
