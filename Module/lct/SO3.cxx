@@ -11,18 +11,26 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 }
 
-Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
+namespace
 {
-  const double theta2 = w.squaredNorm();
+/// The coefficients of Rodrigues' formula R = I + sinc hat(w) + b hat(w)^2, with
+/// cosMinusOne = cos t - 1 = -t^2 b, all without cancellation near t = 0.
+struct RodriguesCoefficients
+{
   double sinc;        // sin(t) / t
-  double halfSincSq2; // (1 - cos t) / t^2 = (sin(t/2) / (t/2))^2 / 2
-  double cosTheta;
+  double halfSincSq2; // b = (1 - cos t) / t^2 = (sin(t/2) / (t/2))^2 / 2
+  double cosMinusOne; // cos t - 1 = -2 sin^2(t/2)
+};
+
+RodriguesCoefficients rodriguesCoefficients(double theta2)
+{
+  RodriguesCoefficients c;
   if (theta2 < 1e-8)
   {
     // Taylor series; the next terms are below 1e-24.
-    sinc = 1.0 - theta2 / 6.0 + theta2 * theta2 / 120.0;
-    halfSincSq2 = 0.5 - theta2 / 24.0 + theta2 * theta2 / 720.0;
-    cosTheta = 1.0 - theta2 * halfSincSq2;
+    c.sinc = 1.0 - theta2 / 6.0 + theta2 * theta2 / 120.0;
+    c.halfSincSq2 = 0.5 - theta2 / 24.0 + theta2 * theta2 / 720.0;
+    c.cosMinusOne = -theta2 * c.halfSincSq2;
   }
   else
   {
@@ -31,14 +39,49 @@ Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
     const double halfSin = std::sin(0.5 * theta);
     const double halfCos = std::cos(0.5 * theta);
     const double s = halfSin / (0.5 * theta);
-    sinc = halfSin * halfCos / (0.5 * theta);
-    halfSincSq2 = 0.5 * s * s;
-    cosTheta = 1.0 - 2.0 * halfSin * halfSin;
+    c.sinc = halfSin * halfCos / (0.5 * theta);
+    c.halfSincSq2 = 0.5 * s * s;
+    c.cosMinusOne = -2.0 * halfSin * halfSin;
   }
+  return c;
+}
+} // namespace
+
+Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
+{
+  const RodriguesCoefficients c = rodriguesCoefficients(w.squaredNorm());
   // R = cos t I + sinc hat(w) + (1 - cos t)/t^2 w w^T   (hat(w)^2 = w w^T - t^2 I)
-  Eigen::Matrix3d r = halfSincSq2 * (w * w.transpose());
-  r.diagonal().array() += cosTheta;
-  r += sinc * hat(w);
+  Eigen::Matrix3d r = c.halfSincSq2 * (w * w.transpose());
+  r.diagonal().array() += 1.0 + c.cosMinusOne;
+  r += c.sinc * hat(w);
+  return r;
+}
+
+Eigen::Matrix3d expSO3MinusIdentity(const Eigen::Vector3d& w)
+{
+  // The same coefficients as expSO3, written out: the probe deformer calls this once per point.
+  const double theta2 = w.squaredNorm();
+  double sinc, b, cosMinusOne;
+  if (theta2 < 1e-8)
+  {
+    sinc = 1.0 - theta2 / 6.0 + theta2 * theta2 / 120.0;
+    b = 0.5 - theta2 / 24.0 + theta2 * theta2 / 720.0;
+    cosMinusOne = -theta2 * b;
+  }
+  else
+  {
+    const double half = 0.5 * std::sqrt(theta2);
+    const double halfSin = std::sin(half), halfCos = std::cos(half);
+    const double s = halfSin / half;
+    sinc = s * halfCos;
+    b = 0.5 * s * s;
+    cosMinusOne = -2.0 * halfSin * halfSin;
+  }
+  const double x = w[0], y = w[1], z = w[2];
+  Eigen::Matrix3d r;
+  r << b * x * x + cosMinusOne, b * x * y - sinc * z, b * x * z + sinc * y, //
+    b * x * y + sinc * z, b * y * y + cosMinusOne, b * y * z - sinc * x,    //
+    b * x * z - sinc * y, b * y * z + sinc * x, b * z * z + cosMinusOne;
   return r;
 }
 

@@ -38,6 +38,10 @@ inline Eigen::Vector3d vee(const Eigen::Matrix3d& x)
 /// exp(hat(w)), Rodrigues' formula.
 VTKLCT_EXPORT Eigen::Matrix3d expSO3(const Eigen::Vector3d& w);
 
+/// exp(hat(w)) - I without forming I: zero exactly for w = 0 and free of the cancellation of
+/// (I + E) - I for small angles, so that p + (R - I) (p - c) leaves p untouched at rest.
+VTKLCT_EXPORT Eigen::Matrix3d expSO3MinusIdentity(const Eigen::Vector3d& w);
+
 /// The principal logarithm of a rotation matrix: |result| in [0, pi].
 /// At exactly pi either of the two opposite vectors may be returned.
 /// Precondition: R is orthogonal with det +1 to round-off (callers validate).
