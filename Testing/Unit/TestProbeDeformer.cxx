@@ -884,3 +884,39 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
     expectRefused(g, "cannot be deformed", 0);
   }
 }
+
+TEST(ProbeDeformer, ATwistedCylinderKeepsItsRadiusExceptUnderLinearBlending)
+{
+  // A cylinder of radius 1 along z in [0, 10]; the top probe turned 180 degrees about z. At
+  // mid-height the weights are 1/2 each: LBS averages R(180) and I, which collapses the section
+  // to |cos 90| = 0; Polar and DQS turn it by 90 degrees and keep the radius.
+  vtkNew<vtkPolyData> pd;
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (int a = 0; a < 16; ++a)
+  {
+    pts->InsertNextPoint(std::cos(a * kPi / 8), std::sin(a * kPi / 8), 5.0);
+  }
+  pd->SetPoints(pts);
+  const std::pair<int, double> expected[] = { { vtkProbeDeformerLCT::POLAR, 1.0 },
+    { vtkProbeDeformerLCT::DUAL_QUATERNION, 1.0 }, { vtkProbeDeformerLCT::LINEAR, 0.0 } };
+  for (const auto& [mode, radius] : expected)
+  {
+    vtkNew<vtkTransform> bottom, top, topRest;
+    topRest->Translate(0, 0, 10);
+    top->Translate(0, 0, 10);
+    top->RotateZ(180);
+    vtkNew<vtkProbeDeformerLCT> f;
+    f->AddProbe(bottom);
+    f->AddProbe(top, topRest);
+    f->SetBlendMode(mode);
+    f->SetInputData(pd);
+    ASSERT_EQ(f->GetExecutive()->Update(), 1);
+    auto* out = vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
+    for (vtkIdType i = 0; i < 16; ++i)
+    {
+      EXPECT_NEAR(pointOf(out, i).head<2>().norm(), radius, 1e-12) << mode << " " << i;
+      EXPECT_NEAR(pointOf(out, i).z(), 5.0, 1e-12);
+    }
+  }
+}
