@@ -16,6 +16,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include "AssimpSampling.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
@@ -37,68 +39,6 @@ constexpr std::size_t kMaxJoints = 10000;
 constexpr std::size_t kMaxTransforms = 30000000;
 
 using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
-
-Eigen::Matrix4d toEigen(const aiMatrix4x4& m)
-{
-  Eigen::Matrix4d out;
-  out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
-    m.d4;
-  return out;
-}
-
-/// The index of the last key at or before `time` (0 before the first), and the fraction of
-/// the way to the next one.
-template <typename Key>
-std::pair<unsigned, double> bracket(const Key* keys, unsigned count, double time)
-{
-  const Key* after =
-    std::upper_bound(keys, keys + count, time, [](double t, const Key& k) { return t < k.mTime; });
-  if (after == keys)
-  {
-    return { 0u, 0.0 };
-  }
-  const unsigned i = static_cast<unsigned>(after - keys) - 1;
-  if (i + 1 >= count || !(keys[i + 1].mTime > keys[i].mTime))
-  {
-    return { i, 0.0 };
-  }
-  return { i, (time - keys[i].mTime) / (keys[i + 1].mTime - keys[i].mTime) };
-}
-
-Eigen::Vector3d sampleVector(
-  const aiVectorKey* keys, unsigned count, double time, const Eigen::Vector3d& fallback)
-{
-  if (count == 0)
-  {
-    return fallback;
-  }
-  const auto [i, s] = bracket(keys, count, time);
-  const Eigen::Vector3d a(keys[i].mValue.x, keys[i].mValue.y, keys[i].mValue.z);
-  if (s == 0.0)
-  {
-    return a;
-  }
-  const Eigen::Vector3d b(keys[i + 1].mValue.x, keys[i + 1].mValue.y, keys[i + 1].mValue.z);
-  return (1.0 - s) * a + s * b;
-}
-
-Eigen::Quaterniond sampleRotation(
-  const aiQuatKey* keys, unsigned count, double time, const Eigen::Quaterniond& fallback)
-{
-  if (count == 0)
-  {
-    return fallback;
-  }
-  const auto [i, s] = bracket(keys, count, time);
-  const aiQuaternion& qa = keys[i].mValue;
-  const Eigen::Quaterniond a(qa.w, qa.x, qa.y, qa.z);
-  if (s == 0.0)
-  {
-    return a;
-  }
-  const aiQuaternion& qb = keys[i + 1].mValue;
-  return a.slerp(s, Eigen::Quaterniond(qb.w, qb.x, qb.y, qb.z));
-}
 
 struct Node
 {
@@ -261,35 +201,13 @@ bool vtkSkeletonAnimationReader::Load()
   a.locals.resize(static_cast<std::size_t>(frames) * nodes.size());
   for (std::size_t j = 0; j < nodes.size(); ++j)
   {
-    const Eigen::Matrix4d rest = toEigen(nodes[j].node->mTransformation);
+    const Eigen::Matrix4d rest = lct_assimp::toEigen(nodes[j].node->mTransformation);
     const auto found = channels.find(nodes[j].node->mName.C_Str());
     const aiNodeAnim* channel = found == channels.end() ? nullptr : found->second;
-    // The rest transform's parts stand in for a channel's missing keys.
-    const Eigen::Vector3d restTranslation = rest.topRightCorner<3, 1>();
-    const Eigen::Matrix3d restLinear = rest.topLeftCorner<3, 3>();
-    const Eigen::Vector3d restScale = restLinear.colwise().norm();
-    const Eigen::Quaterniond restRotation(
-      Eigen::Matrix3d(restLinear * restScale.cwiseInverse().asDiagonal()));
     for (unsigned f = 0; f < frames; ++f)
     {
       Eigen::Matrix4d& local = a.locals[static_cast<std::size_t>(f) * nodes.size() + j];
-      if (!channel)
-      {
-        local = rest;
-      }
-      else
-      {
-        const double t = ticks[f];
-        const Eigen::Vector3d position =
-          sampleVector(channel->mPositionKeys, channel->mNumPositionKeys, t, restTranslation);
-        const Eigen::Vector3d scale =
-          sampleVector(channel->mScalingKeys, channel->mNumScalingKeys, t, restScale);
-        const Eigen::Quaterniond rotation =
-          sampleRotation(channel->mRotationKeys, channel->mNumRotationKeys, t, restRotation);
-        local.setIdentity();
-        local.topLeftCorner<3, 3>() = rotation.normalized().toRotationMatrix() * scale.asDiagonal();
-        local.topRightCorner<3, 1>() = position;
-      }
+      local = lct_assimp::sampleLocal(channel, rest, ticks[f]);
       if (!local.allFinite())
       {
         vtkErrorMacro(<< file << ": joint " << a.joints[j].name
