@@ -36,7 +36,8 @@
 namespace lct_fuzz
 {
 
-/// RenderKeys' parser warns on std::cerr about unknown keys; keep that out of the fuzzer's log.
+/// RenderKeys' readers may print notes on std::cerr (a .pvsm camera track's mode); keep them
+/// out of the fuzzer's log.
 inline void SilenceStdErr()
 {
   struct NullBuffer : std::streambuf
