@@ -81,7 +81,23 @@ constexpr double MinScale = 1e-9;
 constexpr double MaxScale = 1e9;
 /// |rotate angle| in degrees.
 constexpr double MaxAngle = 1e6;
+/// Mesh files of a run: --mesh and scene objects read from files together.
 constexpr int MaxMeshes = 16;
+/// Objects of a scene section (files and sources).
+constexpr size_t MaxObjects = 256;
+/// Lights of a scene section (a light kit is 4, ParaView's light inspector offers 8 or so).
+constexpr size_t MaxLights = 16;
+/// Source tessellation: a sphere of 1024 x 1024 quads is 2 million triangles.
+constexpr int MinResolution = 3;
+constexpr int MaxResolution = 1024;
+/// Line width and point size in pixels.
+constexpr double MaxPixelSize = 100.0;
+/// Video frame rate (--fps): Ogg Theora stores it as a fraction; beyond 240 no player keeps up.
+constexpr int MaxFps = 240;
+/// ParaView state files: a state with a few hundred proxies is ~1 MiB; 64 MiB holds embedded
+/// data too. vtkXMLDataElement frees its children recursively, so the nesting is bounded.
+constexpr std::uintmax_t MaxStateBytes = 64u << 20;
+constexpr int MaxXmlDepth = 256;
 constexpr std::uintmax_t MaxMeshFileBytes = 1u << 30;
 constexpr long long MaxMeshPoints = 1LL << 24;
 constexpr long long MaxMeshCells = 1LL << 24;
@@ -212,7 +228,8 @@ struct CameraKey
 {
   double Time = 0.0;
   vtkSmartPointer<vtkCamera> Camera;
-  std::string Path; // "camera.keys[3]", for messages
+  std::string Path;           // "camera.keys[3]", for messages
+  bool ClippingRange = false; // given by the key (else reset from the scene's bounds per frame)
 };
 
 struct PropKey
@@ -229,6 +246,62 @@ struct PropTrack
   std::vector<PropKey> Keys;
 };
 
+/// How an object of the scene section is drawn (vtkProperty and the mapper's scalar colouring).
+struct Appearance
+{
+  bool HasColor = false; // else the object's own colours (a file's, the axes') or a palette's
+  double Color[3] = { 0.8, 0.8, 0.8 };
+  double Opacity = 1.0;
+  std::string Representation = "surface"; // surface, wireframe, points
+  bool Visible = true;
+  std::string ColorBy;                   // a point or cell array of the object; empty: none
+  std::string ColorMap = "cool to warm"; // see ColorMapNames()
+  bool HasScalarRange = false;           // else the array's range
+  double ScalarRange[2] = { 0.0, 1.0 };
+  double LineWidth = 1.0;
+  double PointSize = 3.0;
+};
+
+/// An object of the scene section: a mesh file or a source, named as props name it.
+struct SceneObject
+{
+  std::string Name;
+  std::string Path;   // "scene.objects.NAME", for messages
+  std::string File;   // the file (relative names resolved against the keys file's folder), or ""
+  std::string Source; // sphere, cube, cone, plane, axes (when File is empty)
+  double Center[3] = { 0.0, 0.0, 0.0 };
+  double Radius = 0.5;                     // sphere, cone
+  double Height = 1.0;                     // cone
+  double Size[3] = { 1.0, 1.0, 1.0 };      // cube: edge lengths; plane: [width, height]
+  double Direction[3] = { 0.0, 0.0, 1.0 }; // cone axis (base to tip), plane normal
+  double Length = 1.0;                     // axes
+  int Resolution = 32;                     // sphere, cone
+  Appearance Look;
+};
+
+struct SceneLight
+{
+  double Position[3] = { 1.0, 1.0, 1.0 };
+  double FocalPoint[3] = { 0.0, 0.0, 0.0 };
+  double Color[3] = { 1.0, 1.0, 1.0 };
+  double Intensity = 1.0;
+  bool Camera = false; // moves with the camera (position and focal point in camera coordinates)
+};
+
+/// The scene section: what is drawn, and how the image is made.
+struct Scene
+{
+  bool Given = false; // the keys file has a "scene" section
+  double Background[3] = { 0.96, 0.95, 0.92 };
+  bool Gradient = false; // Background at the bottom, BackgroundTop at the top
+  double BackgroundTop[3] = { 1.0, 1.0, 1.0 };
+  std::string Lights = "kit"; // kit, headlight, list (Lights below)
+  std::vector<SceneLight> LightList;
+  int Width = 0, Height = 0;         // 0: not given (--size, else 640x360)
+  std::string AntiAliasing = "msaa"; // msaa, fxaa, none
+  std::vector<SceneObject> Objects;  // sorted by name
+};
+
 struct Keys
 {
   std::string Source = "built-in keys"; // file name, for messages
@@ -236,7 +309,45 @@ struct Keys
   bool ConsistentRotation = false; // camera
   std::vector<CameraKey> Camera;   // in increasing time (see SortByTime)
   std::map<std::string, PropTrack> Props;
+  Scene View;
 };
+
+/// The colour maps of Appearance::ColorMap: name and control points (value in [0, 1], r, g, b),
+/// interpolated in Lab space (cool to warm: Moreland's diverging map, as ParaView's default;
+/// viridis: 9 samples of matplotlib's table).
+inline const std::map<std::string, std::vector<std::array<double, 4>>>& ColorMaps()
+{
+  static const std::map<std::string, std::vector<std::array<double, 4>>> maps = {
+    { "cool to warm",
+      { { 0.0, 0.231, 0.298, 0.753 }, { 0.5, 0.865, 0.865, 0.865 },
+        { 1.0, 0.706, 0.016, 0.150 } } },
+    { "viridis",
+      { { 0.0, 0.267, 0.005, 0.329 }, { 0.125, 0.283, 0.141, 0.458 }, { 0.25, 0.254, 0.265, 0.530 },
+        { 0.375, 0.207, 0.372, 0.553 }, { 0.5, 0.164, 0.471, 0.558 },
+        { 0.625, 0.128, 0.567, 0.551 }, { 0.75, 0.135, 0.659, 0.518 },
+        { 0.875, 0.478, 0.821, 0.318 }, { 1.0, 0.993, 0.906, 0.144 } } },
+    { "rainbow",
+      { { 0.0, 0.0, 0.0, 1.0 }, { 0.25, 0.0, 1.0, 1.0 }, { 0.5, 0.0, 1.0, 0.0 },
+        { 0.75, 1.0, 1.0, 0.0 }, { 1.0, 1.0, 0.0, 0.0 } } },
+    { "grayscale", { { 0.0, 0.0, 0.0, 0.0 }, { 1.0, 1.0, 1.0, 1.0 } } },
+  };
+  return maps;
+}
+
+/// "a, b or c" of a set of names, for messages.
+template <typename Names>
+std::string OneOf(const Names& names)
+{
+  std::string out;
+  size_t i = 0;
+  for (const auto& n : names)
+  {
+    const std::string name = Printable(n);
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + name;
+    ++i;
+  }
+  return out;
+}
 
 inline bool IsInterpolationName(const std::string& name)
 {
@@ -405,19 +516,96 @@ inline Keys BuiltIn()
 // JSON
 
 /// nlohmann's DOM builder, but a parse error (including a number that overflows a double, e.g.
-/// 1e400, which nlohmann reports as out_of_range 406) keeps the byte offset it happened at.
+/// 1e400, which nlohmann reports as out_of_range 406) keeps the byte offset it happened at and
+/// the place in the document (`scene.objects.ball.color[0]`), so that a message names the field
+/// as well as the line and column. The base class's methods are not virtual: sax_parse calls
+/// these through the static type, and each forwards to the base after noting where it is.
 struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
 {
-  using nlohmann::detail::json_sax_dom_parser<nlohmann::json>::json_sax_dom_parser;
+  using Base = nlohmann::detail::json_sax_dom_parser<nlohmann::json>;
+  using Base::Base;
   size_t ErrorOffset = 0;
   std::string ErrorMessage;
+  std::string ErrorPath; // where the error happened; "" at the top level
+
+  bool null() { return this->Value() && Base::null(); }
+  bool boolean(bool v) { return this->Value() && Base::boolean(v); }
+  bool number_integer(number_integer_t v) { return this->Value() && Base::number_integer(v); }
+  bool number_unsigned(number_unsigned_t v) { return this->Value() && Base::number_unsigned(v); }
+  bool number_float(number_float_t v, const string_t& s)
+  {
+    return this->Value() && Base::number_float(v, s);
+  }
+  bool string(string_t& v) { return this->Value() && Base::string(v); }
+  bool binary(binary_t& v) { return this->Value() && Base::binary(v); }
+  bool start_object(std::size_t n)
+  {
+    this->Value();
+    this->Levels.push_back({ false, "", 0 });
+    return Base::start_object(n);
+  }
+  bool key(string_t& k)
+  {
+    this->Levels.back().Key = k;
+    return Base::key(k);
+  }
+  bool end_object()
+  {
+    this->Levels.pop_back();
+    return Base::end_object();
+  }
+  bool start_array(std::size_t n)
+  {
+    this->Value();
+    this->Levels.push_back({ true, "", 0 });
+    return Base::start_array(n);
+  }
+  bool end_array()
+  {
+    this->Levels.pop_back();
+    return Base::end_array();
+  }
 
   template <class Exception>
   bool parse_error(size_t offset, const std::string&, const Exception& ex)
   {
     this->ErrorOffset = offset;
     this->ErrorMessage = ex.what();
+    for (size_t i = 0; i < this->Levels.size(); ++i)
+    {
+      const Level& l = this->Levels[i];
+      const bool innermost = i + 1 == this->Levels.size();
+      if (l.Array)
+      {
+        // The element being read: the next one in the innermost array, the open one above it.
+        const size_t index = innermost ? l.Count : (l.Count > 0 ? l.Count - 1 : 0);
+        this->ErrorPath += "[" + std::to_string(index) + "]";
+      }
+      else if (!l.Key.empty())
+      {
+        this->ErrorPath += (this->ErrorPath.empty() ? "" : ".") + Printable(l.Key);
+      }
+    }
     return false;
+  }
+
+private:
+  struct Level
+  {
+    bool Array;
+    std::string Key; // objects: the last key read
+    size_t Count;    // arrays: the elements started
+  };
+  std::vector<Level> Levels;
+
+  /// Counts a value (or a nested object or array) started in the enclosing array.
+  bool Value()
+  {
+    if (!this->Levels.empty() && this->Levels.back().Array)
+    {
+      ++this->Levels.back().Count;
+    }
+    return true;
   }
 };
 
@@ -434,32 +622,55 @@ public:
     throw InputError(this->File + ": " + what);
   }
 
-  /// Prints at most MaxWarnings warnings: a hostile file may hold a million unknown keys.
-  void Warn(const std::string& what) const
-  {
-    static constexpr int MaxWarnings = 20;
-    if (this->Warnings < MaxWarnings)
-    {
-      std::cerr << this->File << ": warning: " << what << "\n";
-    }
-    else if (this->Warnings == MaxWarnings)
-    {
-      std::cerr << this->File << ": warning: more warnings not shown\n";
-    }
-    ++this->Warnings;
-  }
-
+  /// Refuses a key that is not in `known`: a misspelt field ("colour", "visble") would
+  /// otherwise be ignored and the user would see the default without knowing why. Suggests the
+  /// known key nearest in edit distance when it is close.
   void CheckKeys(
     const nlohmann::json& object, const std::string& path, const std::set<std::string>& known) const
   {
     for (auto it = object.begin(); it != object.end(); ++it)
     {
-      if (!known.count(it.key()))
+      if (known.count(it.key()))
       {
-        this->Warn(
-          "unknown key " + (path.empty() ? "" : path + ".") + Printable(it.key()) + " (ignored)");
+        continue;
+      }
+      std::string nearest;
+      size_t best = 3; // at most 2 edits away
+      for (const auto& k : known)
+      {
+        const size_t d = EditDistance(it.key(), k);
+        if (d < best)
+        {
+          best = d;
+          nearest = k;
+        }
+      }
+      this->Fail((path.empty() ? "" : path + ".") + Printable(it.key()) + ": unknown key" +
+        (nearest.empty() ? "" : " (did you mean \"" + nearest + "\"?)") + "; " +
+        (path.empty() ? "the top level" : path) + " takes " + OneOf(known));
+    }
+  }
+
+  static size_t EditDistance(const std::string& a, const std::string& b)
+  {
+    if (a.size() > 64 || b.size() > 64)
+    {
+      return 64;
+    }
+    std::vector<size_t> row(b.size() + 1);
+    std::iota(row.begin(), row.end(), size_t(0));
+    for (size_t i = 1; i <= a.size(); ++i)
+    {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j)
+      {
+        const size_t up = row[j];
+        row[j] = std::min({ row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1]) });
+        diagonal = up;
       }
     }
+    return row[b.size()];
   }
 
   const nlohmann::json& Object(
@@ -596,7 +807,7 @@ public:
     this->Vector(
       key, "window_center", path, 2, v.WindowCenter, -Limits::MaxOffset, Limits::MaxOffset);
     this->Vector(key, "view_shear", path, 3, v.ViewShear, -Limits::MaxOffset, Limits::MaxOffset);
-    this->Vector(
+    out.ClippingRange = this->Vector(
       key, "clipping_range", path, 2, v.ClippingRange, Limits::MinLength, Limits::MaxLength);
     if (key.contains("view_angle"))
     {
@@ -739,9 +950,17 @@ public:
       {
         what = what.substr(bracket + 2);
       }
-      throw InputError(this->File + ":" +
-        LineColumn(text, builder.ErrorOffset > 0 ? builder.ErrorOffset - 1 : 0) +
-        ": JSON parse error: " + what);
+      // JSON has no NaN or Infinity; a value that starts like one is the common cause.
+      const size_t at = builder.ErrorOffset > 0 ? builder.ErrorOffset - 1 : 0;
+      const size_t word = text.find_last_of(" \t\r\n[,:", at);
+      const std::string token =
+        text.substr(word == std::string::npos ? 0 : word + 1, 9); // "-Infinity"
+      const bool nanLike = token.rfind("NaN", 0) == 0 || token.rfind("nan", 0) == 0 ||
+        token.rfind("Inf", 0) == 0 || token.rfind("inf", 0) == 0 || token.rfind("-Inf", 0) == 0 ||
+        token.rfind("-inf", 0) == 0;
+      throw InputError(this->File + ":" + LineColumn(text, at) + ": JSON parse error: " + what +
+        (builder.ErrorPath.empty() ? "" : " (at " + builder.ErrorPath + ")") +
+        (nanLike ? " (JSON has no NaN or Infinity: every value must be a finite number)" : ""));
     }
     return doc;
   }
@@ -764,40 +983,16 @@ public:
   {
     if (!doc.is_object())
     {
-      this->Fail("the top level must be an object with \"camera\" (and optionally \"props\")");
+      this->Fail("the top level must be an object with \"camera\" (and optionally \"props\" "
+                 "and \"scene\")");
     }
-    this->CheckKeys(doc, "", { "camera", "props" });
+    this->CheckKeys(doc, "", { "camera", "props", "scene" });
     Keys keys;
     keys.Source = this->File;
-    const nlohmann::json& camera = this->Object(doc, "camera", "");
-    this->CheckKeys(camera, "camera", { "interpolation", "keys", "consistent_rotation" });
-    if (camera.contains("interpolation"))
+    if (doc.contains("camera") || !this->CameraOptional)
     {
-      keys.Interpolation = this->Interpolation(camera, "camera");
+      this->ReadCamera(this->Object(doc, "camera", ""), keys);
     }
-    if (camera.contains("consistent_rotation"))
-    {
-      keys.ConsistentRotation =
-        this->Bool(camera.at("consistent_rotation"), "camera.consistent_rotation");
-    }
-    const nlohmann::json& cameraKeys = this->KeyArray(camera, "camera", Limits::MaxKeys);
-    for (size_t i = 0; i < cameraKeys.size(); ++i)
-    {
-      CameraKey key = this->ReadCameraKey(cameraKeys[i], "camera.keys[" + std::to_string(i) + "]");
-      if (!keys.Camera.empty() &&
-        keys.Camera.front().Camera->GetParallelProjection() != key.Camera->GetParallelProjection())
-      {
-        this->Fail(key.Path +
-          ".parallel differs from camera.keys[0].parallel (all keys must "
-          "use the same projection)");
-      }
-      keys.Camera.push_back(key);
-    }
-    if (keys.Camera.size() < 2)
-    {
-      this->Fail("camera.keys: needs at least 2 keys, found " + std::to_string(keys.Camera.size()));
-    }
-    SortByTime(keys.Camera, this->File);
     if (doc.contains("props"))
     {
       const nlohmann::json& props = this->Object(doc, "props", "");
@@ -833,12 +1028,361 @@ public:
         keys.Props[it.key()] = track;
       }
     }
+    if (doc.contains("scene"))
+    {
+      this->ReadScene(this->Object(doc, "scene", ""), keys.View);
+    }
     return keys;
+  }
+
+  /// Set by lct-render when camera keys come from ParaView files: the keys file may then hold
+  /// only a scene and props.
+  void SetCameraOptional(bool optional) { this->CameraOptional = optional; }
+
+private:
+  void ReadCamera(const nlohmann::json& camera, Keys& keys) const
+  {
+    this->CheckKeys(camera, "camera", { "interpolation", "keys", "consistent_rotation" });
+    if (camera.contains("interpolation"))
+    {
+      keys.Interpolation = this->Interpolation(camera, "camera");
+    }
+    if (camera.contains("consistent_rotation"))
+    {
+      keys.ConsistentRotation =
+        this->Bool(camera.at("consistent_rotation"), "camera.consistent_rotation");
+    }
+    const nlohmann::json& cameraKeys = this->KeyArray(camera, "camera", Limits::MaxKeys);
+    for (size_t i = 0; i < cameraKeys.size(); ++i)
+    {
+      CameraKey key = this->ReadCameraKey(cameraKeys[i], "camera.keys[" + std::to_string(i) + "]");
+      if (!keys.Camera.empty() &&
+        keys.Camera.front().Camera->GetParallelProjection() != key.Camera->GetParallelProjection())
+      {
+        this->Fail(key.Path +
+          ".parallel differs from camera.keys[0].parallel (all keys must "
+          "use the same projection)");
+      }
+      // Interpolated clipping ranges between keys that have one and keys that are refitted
+      // each frame would jump: all or none.
+      if (!keys.Camera.empty() && keys.Camera.front().ClippingRange != key.ClippingRange)
+      {
+        const CameraKey& with = key.ClippingRange ? key : keys.Camera.front();
+        const CameraKey& without = key.ClippingRange ? keys.Camera.front() : key;
+        this->Fail(without.Path + " has no clipping_range but " + with.Path +
+          " has one: give it on every camera key (interpolated) or on none (reset from the "
+          "scene's bounds at every frame)");
+      }
+      keys.Camera.push_back(key);
+    }
+    if (keys.Camera.size() < 2)
+    {
+      this->Fail("camera.keys: needs at least 2 keys, found " + std::to_string(keys.Camera.size()));
+    }
+    SortByTime(keys.Camera, this->File);
+  }
+
+  /// A colour: [r, g, b] in [0, 1].
+  void Color(
+    const nlohmann::json& object, const char* key, const std::string& path, double* out) const
+  {
+    this->Vector(object, key, path, 3, out, 0.0, 1.0);
+  }
+
+  std::string Choice(const nlohmann::json& object, const char* key, const std::string& path,
+    const std::vector<std::string>& names) const
+  {
+    const std::string p = path + "." + key;
+    const nlohmann::json& v = object.at(key);
+    if (!v.is_string())
+    {
+      this->Fail(p + " must be a string: " + OneOf(names));
+    }
+    const std::string name = v.get<std::string>();
+    if (std::find(names.begin(), names.end(), name) == names.end())
+    {
+      this->Fail(p + ": unknown value \"" + Printable(name) + "\" (expected " + OneOf(names) + ")");
+    }
+    return name;
+  }
+
+  void ReadScene(const nlohmann::json& scene, Scene& out) const
+  {
+    out.Given = true;
+    this->CheckKeys(scene, "scene",
+      { "objects", "background", "background_top", "lights", "size", "anti_aliasing" });
+    this->Color(scene, "background", "scene", out.Background);
+    out.Gradient = scene.contains("background_top");
+    this->Color(scene, "background_top", "scene", out.BackgroundTop);
+    if (scene.contains("size"))
+    {
+      double size[2];
+      this->Vector(scene, "size", "scene", 2, size, Limits::MinSide, Limits::MaxSide);
+      if (size[0] != std::floor(size[0]) || size[1] != std::floor(size[1]))
+      {
+        this->Fail("scene.size must be two whole numbers [width, height]");
+      }
+      if (size[0] * size[1] > static_cast<double>(Limits::MaxPixels))
+      {
+        this->Fail("scene.size " + Num(size[0]) + "x" + Num(size[1]) + " has more than " +
+          std::to_string(Limits::MaxPixels) + " pixels");
+      }
+      out.Width = static_cast<int>(size[0]);
+      out.Height = static_cast<int>(size[1]);
+    }
+    if (scene.contains("anti_aliasing"))
+    {
+      out.AntiAliasing = this->Choice(scene, "anti_aliasing", "scene", { "msaa", "fxaa", "none" });
+    }
+    if (scene.contains("lights"))
+    {
+      const nlohmann::json& lights = scene.at("lights");
+      if (lights.is_string())
+      {
+        out.Lights = this->Choice(scene, "lights", "scene", { "kit", "headlight" });
+      }
+      else if (lights.is_array() && !lights.empty() && lights.size() <= Limits::MaxLights)
+      {
+        out.Lights = "list";
+        for (size_t i = 0; i < lights.size(); ++i)
+        {
+          out.LightList.push_back(
+            this->ReadLight(lights[i], "scene.lights[" + std::to_string(i) + "]"));
+        }
+      }
+      else
+      {
+        this->Fail("scene.lights must be \"kit\", \"headlight\" or an array of 1 to " +
+          std::to_string(Limits::MaxLights) + " lights");
+      }
+    }
+    if (!scene.contains("objects"))
+    {
+      this->Fail("scene.objects is missing (an object of NAME: {\"file\": ...} or "
+                 "{\"source\": ...} entries)");
+    }
+    const nlohmann::json& objects = this->Object(scene, "objects", "scene");
+    if (objects.empty() || objects.size() > Limits::MaxObjects)
+    {
+      this->Fail("scene.objects must hold 1 to " + std::to_string(Limits::MaxObjects) +
+        " objects, found " + std::to_string(objects.size()));
+    }
+    for (auto it = objects.begin(); it != objects.end(); ++it)
+    {
+      out.Objects.push_back(this->ReadObject(it.key(), it.value()));
+    }
+  }
+
+  SceneLight ReadLight(const nlohmann::json& light, const std::string& path) const
+  {
+    if (!light.is_object())
+    {
+      this->Fail(path + " must be an object");
+    }
+    this->CheckKeys(light, path, { "position", "focal_point", "color", "intensity", "camera" });
+    SceneLight out;
+    const double X = Limits::MaxCoordinate;
+    if (!this->Vector(light, "position", path, 3, out.Position, -X, X))
+    {
+      this->Fail(path + ".position is missing");
+    }
+    this->Vector(light, "focal_point", path, 3, out.FocalPoint, -X, X);
+    this->Color(light, "color", path, out.Color);
+    if (light.contains("intensity"))
+    {
+      out.Intensity = this->Number(light.at("intensity"), path + ".intensity", 0.0, 100.0);
+    }
+    if (light.contains("camera"))
+    {
+      out.Camera = this->Bool(light.at("camera"), path + ".camera");
+    }
+    return out;
+  }
+
+  SceneObject ReadObject(const std::string& name, const nlohmann::json& object) const
+  {
+    SceneObject out;
+    out.Name = name;
+    out.Path = "scene.objects." + Printable(name);
+    const std::string& path = out.Path;
+    if (name.empty() || Printable(name) != name)
+    {
+      this->Fail(path + ": an object name must be 1 to 80 printable ASCII characters");
+    }
+    if (!object.is_object())
+    {
+      this->Fail(path + " must be an object with \"file\" or \"source\"");
+    }
+    if (object.contains("file") == object.contains("source"))
+    {
+      this->Fail(path + " needs exactly one of \"file\" (a mesh) and \"source\" (" +
+        OneOf(SourceNames()) + ")");
+    }
+    std::set<std::string> known = { "color", "opacity", "representation", "visible", "color_by",
+      "color_map", "scalar_range", "line_width", "point_size" };
+    if (object.contains("file"))
+    {
+      known.insert("file");
+      const nlohmann::json& file = object.at("file");
+      if (!file.is_string() || file.get<std::string>().empty())
+      {
+        this->Fail(path + ".file must be a file name");
+      }
+      out.File = file.get<std::string>();
+      const std::filesystem::path f(out.File);
+      if (f.is_relative())
+      {
+        // Relative to the keys file, so that a scene and its meshes move together.
+        out.File = (std::filesystem::path(this->File).parent_path() / f).string();
+      }
+    }
+    else
+    {
+      out.Source = this->Choice(object, "source", path, SourceNames());
+      known.insert("source");
+      const std::map<std::string, std::set<std::string>> parameters = {
+        { "sphere", { "center", "radius", "resolution" } },
+        { "cube", { "center", "size" } },
+        { "cone", { "center", "radius", "height", "direction", "resolution" } },
+        { "plane", { "center", "size", "normal" } },
+        { "axes", { "center", "length" } },
+      };
+      for (auto it = object.begin(); it != object.end(); ++it)
+      {
+        for (const auto& [source, names] : parameters)
+        {
+          if (source != out.Source && names.count(it.key()) &&
+            !parameters.at(out.Source).count(it.key()))
+          {
+            this->Fail(path + "." + it.key() + ": not a parameter of a " + out.Source + " (a " +
+              out.Source + " takes " + OneOf(parameters.at(out.Source)) + ")");
+          }
+        }
+      }
+      known.insert(parameters.at(out.Source).begin(), parameters.at(out.Source).end());
+      const double X = Limits::MaxCoordinate, L = Limits::MaxLength, l = Limits::MinLength;
+      this->Vector(object, "center", path, 3, out.Center, -X, X);
+      if (object.contains("radius"))
+      {
+        out.Radius = this->Number(object.at("radius"), path + ".radius", l, L);
+      }
+      if (object.contains("height"))
+      {
+        out.Height = this->Number(object.at("height"), path + ".height", l, L);
+      }
+      if (object.contains("length"))
+      {
+        out.Length = this->Number(object.at("length"), path + ".length", l, L);
+      }
+      if (out.Source == "plane")
+      {
+        if (object.contains("size"))
+        {
+          this->Vector(object, "size", path, 2, out.Size, l, L);
+        }
+      }
+      else
+      {
+        this->Vector(object, "size", path, 3, out.Size, l, L);
+      }
+      if (out.Source == "cone")
+      {
+        out.Direction[0] = 0.0; // a cone points up (+y) unless told otherwise
+        out.Direction[1] = 1.0;
+        out.Direction[2] = 0.0;
+      }
+      for (const char* axis : { "direction", "normal" })
+      {
+        if (this->Vector(object, axis, path, 3, out.Direction, -X, X) && out.Direction[0] == 0.0 &&
+          out.Direction[1] == 0.0 && out.Direction[2] == 0.0)
+        {
+          this->Fail(path + "." + axis + " must not be zero");
+        }
+      }
+      if (object.contains("resolution"))
+      {
+        const double r = this->Number(object.at("resolution"), path + ".resolution",
+          Limits::MinResolution, Limits::MaxResolution);
+        if (r != std::floor(r))
+        {
+          this->Fail(path + ".resolution must be a whole number");
+        }
+        out.Resolution = static_cast<int>(r);
+      }
+    }
+    this->CheckKeys(object, path, known);
+    Appearance& look = out.Look;
+    look.HasColor = this->Vector(object, "color", path, 3, look.Color, 0.0, 1.0);
+    if (object.contains("opacity"))
+    {
+      look.Opacity = this->Number(object.at("opacity"), path + ".opacity", 0.0, 1.0);
+    }
+    if (object.contains("representation"))
+    {
+      look.Representation =
+        this->Choice(object, "representation", path, { "surface", "wireframe", "points" });
+    }
+    if (object.contains("visible"))
+    {
+      look.Visible = this->Bool(object.at("visible"), path + ".visible");
+    }
+    if (object.contains("color_by"))
+    {
+      const nlohmann::json& v = object.at("color_by");
+      if (!v.is_string() || v.get<std::string>().empty())
+      {
+        this->Fail(path + ".color_by must be the name of a point or cell array");
+      }
+      look.ColorBy = v.get<std::string>();
+    }
+    for (const char* needsArray : { "color_map", "scalar_range" })
+    {
+      if (object.contains(needsArray) && look.ColorBy.empty())
+      {
+        this->Fail(path + "." + needsArray + " needs color_by (the array to colour by)");
+      }
+    }
+    if (object.contains("color_map"))
+    {
+      std::vector<std::string> names;
+      for (const auto& m : ColorMaps())
+      {
+        names.push_back(m.first);
+      }
+      look.ColorMap = this->Choice(object, "color_map", path, names);
+    }
+    if (object.contains("scalar_range"))
+    {
+      look.HasScalarRange = true;
+      this->Vector(object, "scalar_range", path, 2, look.ScalarRange, -DBL_MAX, DBL_MAX);
+      if (!(look.ScalarRange[0] < look.ScalarRange[1]))
+      {
+        this->Fail(path + ".scalar_range must be [low, high] with low < high");
+      }
+    }
+    if (object.contains("line_width"))
+    {
+      look.LineWidth =
+        this->Number(object.at("line_width"), path + ".line_width", 0.1, Limits::MaxPixelSize);
+    }
+    if (object.contains("point_size"))
+    {
+      look.PointSize =
+        this->Number(object.at("point_size"), path + ".point_size", 0.1, Limits::MaxPixelSize);
+    }
+    return out;
+  }
+
+public:
+  static const std::vector<std::string>& SourceNames()
+  {
+    static const std::vector<std::string> names = { "sphere", "cube", "cone", "plane", "axes" };
+    return names;
   }
 
 private:
   std::string File;
-  mutable int Warnings = 0;
+  bool CameraOptional = false;
 };
 
 /// `text` as a finite number in [lo, hi], all of it (strtod alone would take "12abc" as 12 and
@@ -882,6 +1426,191 @@ inline bool ParseNumber(const char* text, double lo, double hi, double& out)
   return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// ParaView XML: camera files (.pvcc) and state files (.pvsm), read with VTK's XML parser.
+
+/// What lct-render reads, for the message about any other file.
+constexpr const char* AcceptedInputs =
+  "lct-render reads a JSON keys file, ParaView camera files (.pvcc, <PVCameraConfiguration>) "
+  "and ParaView state files (.pvsm, <ParaView><ServerManagerState>) with a camera track";
+
+/// `text` parsed by vtkXMLDataParser (kept alive with its elements), or null when it is not
+/// well-formed XML. Refuses nesting deeper than MaxXmlDepth first: vtkXMLDataElement frees its
+/// children recursively, so depth must be bounded before the parser builds the tree.
+inline vtkSmartPointer<vtkXMLDataParser> ParseXml(const std::string& file, const std::string& text)
+{
+  int depth = 0;
+  char quote = 0;
+  bool inTag = false;
+  for (size_t i = 0; i < text.size(); ++i)
+  {
+    const char c = text[i];
+    if (quote)
+    {
+      quote = c == quote ? 0 : quote;
+    }
+    else if (inTag && (c == '"' || c == '\''))
+    {
+      quote = c;
+    }
+    else if (c == '<')
+    {
+      const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+      inTag = true;
+      if (next == '/')
+      {
+        --depth;
+      }
+      else if (next != '?' && next != '!' && ++depth > Limits::MaxXmlDepth)
+      {
+        throw InputError(file + ":" + LineColumn(text, i) + ": XML nested deeper than " +
+          std::to_string(Limits::MaxXmlDepth) + " levels");
+      }
+    }
+    else if (c == '>')
+    {
+      if (inTag && i > 0 && text[i - 1] == '/')
+      {
+        --depth;
+      }
+      inTag = false;
+    }
+  }
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  parser->SetIgnoreCharacterData(1);
+  // The parser reports malformed XML through vtkErrorMacro; the callers' messages say it better,
+  // and an observer keeps VTK from printing it.
+  vtkNew<vtkCallbackCommand> quiet;
+  parser->AddObserver(vtkCommand::ErrorEvent, quiet);
+  parser->AddObserver(vtkCommand::WarningEvent, quiet);
+  std::istringstream stream(text);
+  parser->SetStream(&stream);
+  const bool ok = parser->Parse() && parser->GetRootElement();
+  parser->SetStream(nullptr);
+  return ok ? parser : nullptr;
+}
+
+/// The range and element count of a ParaView property lct-render reads.
+struct PropertyRange
+{
+  int Size;
+  double Lo, Hi;
+};
+
+/// The values of a ParaView <Property> (its <Element index= value=> children): every element
+/// present once, each a complete finite decimal number in the range. `where` names the file and
+/// the property in messages.
+inline std::vector<double> PropertyValues(
+  vtkXMLDataElement* property, const PropertyRange& range, const std::string& where)
+{
+  std::vector<double> values(range.Size, 0.0);
+  std::vector<bool> seen(range.Size, false);
+  for (int i = 0; i < property->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = property->GetNestedElement(i);
+    if (std::string(element->GetName()) != "Element")
+    {
+      continue;
+    }
+    const char* indexText = element->GetAttribute("index");
+    const char* valueText = element->GetAttribute("value");
+    double index = -1.0;
+    if (!ParseNumber(indexText, 0.0, range.Size - 1, index) || index != std::floor(index))
+    {
+      throw InputError(where + ": element index \"" +
+        Printable(indexText ? indexText : "(missing)") + "\" is not one of 0.." +
+        std::to_string(range.Size - 1));
+    }
+    const int k = static_cast<int>(index);
+    if (seen[k])
+    {
+      throw InputError(where + ": element " + std::to_string(k) + " appears twice");
+    }
+    if (!ParseNumber(valueText, range.Lo, range.Hi, values[k]))
+    {
+      throw InputError(where + "[" + std::to_string(k) + "]: value \"" +
+        Printable(valueText ? valueText : "(missing)") + "\" is not a finite number in [" +
+        Num(range.Lo) + ", " + Num(range.Hi) + "]");
+    }
+    seen[k] = true;
+  }
+  for (int k = 0; k < range.Size; ++k)
+  {
+    if (!seen[k])
+    {
+      throw InputError(where + " has no element " + std::to_string(k) + " (needs " +
+        std::to_string(range.Size) + ")");
+    }
+  }
+  return values;
+}
+
+/// The <Property name=...> children of `proxy` whose names are in `wanted`, read by
+/// PropertyValues; a property given twice is an error. `where` prefixes the messages.
+inline std::map<std::string, std::vector<double>> ReadProperties(vtkXMLDataElement* proxy,
+  const std::map<std::string, PropertyRange>& wanted, const std::string& where)
+{
+  std::map<std::string, std::vector<double>> properties;
+  for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* e = proxy->GetNestedElement(i);
+    const char* name = e->GetAttribute("name");
+    if (std::string(e->GetName()) != "Property" || !name || !wanted.count(name))
+    {
+      continue;
+    }
+    if (properties.count(name))
+    {
+      throw InputError(where + name + " appears twice");
+    }
+    properties[name] = PropertyValues(e, wanted.at(name), where + name);
+  }
+  return properties;
+}
+
+/// A camera key from a ParaView camera's values (`p`: position, focal point, view up, and
+/// optionally view angle, parallel scale, parallel projection under the names in `names`).
+inline CameraKey CameraFromProperties(std::map<std::string, std::vector<double>>& p,
+  const std::array<const char*, 6>& names, double time, const std::string& where)
+{
+  CameraValues v;
+  std::copy_n(p[names[0]].begin(), 3, v.Position);
+  std::copy_n(p[names[1]].begin(), 3, v.FocalPoint);
+  if (p.count(names[2]))
+  {
+    std::copy_n(p[names[2]].begin(), 3, v.ViewUp);
+  }
+  if (p.count(names[3]))
+  {
+    v.ViewAngle = p[names[3]][0];
+  }
+  if (p.count(names[4]))
+  {
+    v.ParallelScale = p[names[4]][0];
+  }
+  if (p.count(names[5]))
+  {
+    v.Parallel = p[names[5]][0] != 0.0;
+  }
+  CameraKey key;
+  key.Time = time;
+  key.Path = where;
+  key.Camera = MakeCamera(v, where, [&](const std::string& m) { throw InputError(m); });
+  return key;
+}
+
+/// The ranges of the camera properties, under ParaView's names with `prefix` ("Camera" in a
+/// .pvcc's view properties, "" in a CameraKeyFrame).
+inline std::map<std::string, PropertyRange> CameraProperties(const std::string& prefix)
+{
+  const double X = Limits::MaxCoordinate;
+  return { { prefix + "Position", { 3, -X, X } }, { prefix + "FocalPoint", { 3, -X, X } },
+    { prefix + "ViewUp", { 3, -X, X } },
+    { prefix + "ViewAngle", { 1, Limits::MinViewAngle, Limits::MaxViewAngle } },
+    { prefix + "ParallelScale", { 1, Limits::MinLength, Limits::MaxLength } },
+    { prefix + "ParallelProjection", { 1, 0.0, 1.0 } } };
+}
+
 /**
  * A camera key from a ParaView camera file (.pvcc, written by ParaView's "Save Camera": a
  * PVCameraConfiguration holding the render view's Camera* properties). Position, focal point and
@@ -893,40 +1622,20 @@ inline bool ParseNumber(const char* text, double lo, double hi, double& out)
 inline CameraKey ReadPvcc(const std::string& file, double time)
 {
   const std::string text = ReadSmallFile(file, Limits::MaxPvccBytes, "camera file");
-  // vtkXMLDataElement frees its children recursively: bound the number of elements (a real
-  // .pvcc has about 40) so that no nesting depth can exhaust the stack.
+  // A real .pvcc has about 40 elements.
   if (std::count(text.begin(), text.end(), '<') > Limits::MaxPvccElements)
   {
     throw InputError(file + ": more than " + std::to_string(Limits::MaxPvccElements) +
       " XML elements; not a ParaView camera file");
   }
-  vtkNew<vtkXMLDataParser> parser;
-  parser->SetIgnoreCharacterData(1);
-  // The parser reports malformed XML through vtkErrorMacro; the message below says it better,
-  // and an observer keeps VTK from printing it.
-  vtkNew<vtkCallbackCommand> quiet;
-  parser->AddObserver(vtkCommand::ErrorEvent, quiet);
-  parser->AddObserver(vtkCommand::WarningEvent, quiet);
-  std::istringstream stream(text);
-  parser->SetStream(&stream);
-  if (!parser->Parse() || !parser->GetRootElement() ||
-    std::string(parser->GetRootElement()->GetName()) != "PVCameraConfiguration")
+  const auto parser = ParseXml(file, text);
+  if (!parser || std::string(parser->GetRootElement()->GetName()) != "PVCameraConfiguration")
   {
     throw InputError(file +
       ": not a ParaView camera file (malformed XML or no "
       "PVCameraConfiguration element)");
   }
-  struct Range
-  {
-    int Size;
-    double Lo, Hi;
-  };
-  const double X = Limits::MaxCoordinate;
-  const std::map<std::string, Range> wanted = { { "CameraPosition", { 3, -X, X } },
-    { "CameraFocalPoint", { 3, -X, X } }, { "CameraViewUp", { 3, -X, X } },
-    { "CameraViewAngle", { 1, Limits::MinViewAngle, Limits::MaxViewAngle } },
-    { "CameraParallelScale", { 1, Limits::MinLength, Limits::MaxLength } },
-    { "CameraParallelProjection", { 1, 0.0, 1.0 } } };
+  // The Camera* properties may sit on any element below the root (the view's proxy).
   std::map<std::string, std::vector<double>> properties;
   std::vector<vtkXMLDataElement*> pending{ parser->GetRootElement() };
   while (!pending.empty())
@@ -937,57 +1646,14 @@ inline CameraKey ReadPvcc(const std::string& file, double time)
     {
       pending.push_back(e->GetNestedElement(i));
     }
-    const char* name = e->GetAttribute("name");
-    if (std::string(e->GetName()) != "Property" || !name || !wanted.count(name))
+    for (auto& [name, values] : ReadProperties(e, CameraProperties("Camera"), file + ": "))
     {
-      continue;
+      if (properties.count(name))
+      {
+        throw InputError(file + ": " + name + " appears twice");
+      }
+      properties[name] = values;
     }
-    const Range& range = wanted.at(name);
-    const std::string where = file + ": " + name;
-    if (properties.count(name))
-    {
-      throw InputError(where + " appears twice");
-    }
-    std::vector<double> values(range.Size, 0.0);
-    std::vector<bool> seen(range.Size, false);
-    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
-    {
-      vtkXMLDataElement* element = e->GetNestedElement(i);
-      if (std::string(element->GetName()) != "Element")
-      {
-        continue;
-      }
-      const char* indexText = element->GetAttribute("index");
-      const char* valueText = element->GetAttribute("value");
-      double index = -1.0;
-      if (!ParseNumber(indexText, 0.0, range.Size - 1, index) || index != std::floor(index))
-      {
-        throw InputError(where + ": element index \"" +
-          Printable(indexText ? indexText : "(missing)") + "\" is not one of 0.." +
-          std::to_string(range.Size - 1));
-      }
-      const int k = static_cast<int>(index);
-      if (seen[k])
-      {
-        throw InputError(where + ": element " + std::to_string(k) + " appears twice");
-      }
-      if (!ParseNumber(valueText, range.Lo, range.Hi, values[k]))
-      {
-        throw InputError(where + "[" + std::to_string(k) + "]: value \"" +
-          Printable(valueText ? valueText : "(missing)") + "\" is not a finite number in [" +
-          Num(range.Lo) + ", " + Num(range.Hi) + "]");
-      }
-      seen[k] = true;
-    }
-    for (int k = 0; k < range.Size; ++k)
-    {
-      if (!seen[k])
-      {
-        throw InputError(where + " has no element " + std::to_string(k) + " (needs " +
-          std::to_string(range.Size) + ")");
-      }
-    }
-    properties[name] = values;
   }
   for (const char* required : { "CameraPosition", "CameraFocalPoint", "CameraViewUp" })
   {
@@ -996,34 +1662,224 @@ inline CameraKey ReadPvcc(const std::string& file, double time)
       throw InputError(file + ": " + required + " is missing");
     }
   }
-  CameraValues v;
-  std::copy_n(properties["CameraPosition"].begin(), 3, v.Position);
-  std::copy_n(properties["CameraFocalPoint"].begin(), 3, v.FocalPoint);
-  std::copy_n(properties["CameraViewUp"].begin(), 3, v.ViewUp);
-  if (properties.count("CameraViewAngle"))
-  {
-    v.ViewAngle = properties["CameraViewAngle"][0];
-  }
-  if (properties.count("CameraParallelScale"))
-  {
-    v.ParallelScale = properties["CameraParallelScale"][0];
-  }
-  if (properties.count("CameraParallelProjection"))
-  {
-    v.Parallel = properties["CameraParallelProjection"][0] != 0.0;
-  }
-  CameraKey key;
-  key.Time = time;
+  CameraKey key = CameraFromProperties(properties,
+    { "CameraPosition", "CameraFocalPoint", "CameraViewUp", "CameraViewAngle",
+      "CameraParallelScale", "CameraParallelProjection" },
+    time, file + ": camera");
   key.Path = "camera";
-  key.Camera =
-    MakeCamera(v, "camera", [&](const std::string& m) { throw InputError(file + ": " + m); });
   return key;
 }
 
-/// Reads and validates a keyframe file; throws InputError.
-inline Keys ReadFile(const std::string& file)
+/// The camera track of a ParaView state file.
+struct StateCamera
 {
-  return Parser(file).Read(ReadSmallFile(file, Limits::MaxKeysFileBytes, "keys file"));
+  std::vector<CameraKey> Keys;   // sorted by time
+  std::string Interpolation;     // linear or spline (the cue's Interpolation)
+  double Start = 0.0, End = 1.0; // the animation scene's StartTime and EndTime
+  std::string Cue;               // "CameraAnimationCue id 4655", for messages
+};
+
+/**
+ * The camera track of a ParaView state file (.pvsm: <ParaView><ServerManagerState> with
+ * <Proxy group= type= id=> elements): the first enabled CameraAnimationCue with key frames, its
+ * CameraKeyFrame proxies (KeyTime, Position, FocalPoint, ViewUp, ViewAngle, ParallelScale; see
+ * ParaView's Remoting/Animation/Resources/animation.xml), the view's CameraParallelProjection,
+ * and the AnimationScene's StartTime and EndTime. A key frame's KeyTime is a fraction of its
+ * cue, and the cue's StartTime/EndTime are fractions of the scene (TimeMode 0, Normalized,
+ * ParaView's default) or offsets from the scene's start (TimeMode 1, Relative): a key's time is
+ * cueStart + KeyTime (cueEnd - cueStart). Throws InputError naming the file, the proxy and the
+ * property.
+ */
+inline StateCamera ReadPvsm(const std::string& file)
+{
+  const std::string text = ReadSmallFile(file, Limits::MaxStateBytes, "ParaView state file");
+  const auto parser = ParseXml(file, text);
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  vtkXMLDataElement* state = root && std::string(root->GetName()) == "ParaView"
+    ? root->FindNestedElementWithName("ServerManagerState")
+    : nullptr;
+  if (!state)
+  {
+    throw InputError(file + ": not a ParaView state file (" +
+      (!parser ? std::string("malformed XML")
+               : "root element <" + Printable(root->GetName()) +
+            ">, not <ParaView><ServerManagerState>") +
+      "). " + AcceptedInputs);
+  }
+  // Proxies by id.
+  std::map<std::string, vtkXMLDataElement*> proxies;
+  std::vector<vtkXMLDataElement*> cues;
+  vtkXMLDataElement* scene = nullptr;
+  for (int i = 0; i < state->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* e = state->GetNestedElement(i);
+    const char* id = e->GetAttribute("id");
+    const char* type = e->GetAttribute("type");
+    if (std::string(e->GetName()) != "Proxy" || !id || !type)
+    {
+      continue;
+    }
+    proxies[id] = e;
+    if (std::string(type) == "CameraAnimationCue")
+    {
+      cues.push_back(e);
+    }
+    else if (std::string(type) == "AnimationScene" && !scene)
+    {
+      scene = e;
+    }
+  }
+  if (cues.empty())
+  {
+    throw InputError(file +
+      ": the state has no camera track (no CameraAnimationCue proxy); in ParaView, add a "
+      "Camera track with key frames in the Animation View, then save the state");
+  }
+  auto proxyList = [&](vtkXMLDataElement* proxy, const char* property) {
+    std::vector<std::string> ids;
+    for (int i = 0; i < proxy->GetNumberOfNestedElements(); ++i)
+    {
+      vtkXMLDataElement* e = proxy->GetNestedElement(i);
+      const char* name = e->GetAttribute("name");
+      if (std::string(e->GetName()) != "Property" || !name || std::string(name) != property)
+      {
+        continue;
+      }
+      for (int j = 0; j < e->GetNumberOfNestedElements(); ++j)
+      {
+        vtkXMLDataElement* p = e->GetNestedElement(j);
+        if (std::string(p->GetName()) == "Proxy" && p->GetAttribute("value"))
+        {
+          ids.emplace_back(p->GetAttribute("value"));
+        }
+      }
+    }
+    return ids;
+  };
+  const std::map<std::string, PropertyRange> cueProperties = { { "Enabled", { 1, 0.0, 1.0 } },
+    { "Interpolation", { 1, 0.0, 1.0 } }, { "Mode", { 1, 0.0, 2.0 } },
+    { "TimeMode", { 1, 0.0, 1.0 } }, { "StartTime", { 1, -Limits::MaxTime, Limits::MaxTime } },
+    { "EndTime", { 1, -Limits::MaxTime, Limits::MaxTime } } };
+  vtkXMLDataElement* cue = nullptr;
+  std::map<std::string, std::vector<double>> cueValues;
+  std::string skipped;
+  for (vtkXMLDataElement* c : cues)
+  {
+    const std::string where = file + ": CameraAnimationCue id " + c->GetAttribute("id") + ": ";
+    auto values = ReadProperties(c, cueProperties, where);
+    const bool enabled = !values.count("Enabled") || values["Enabled"][0] != 0.0;
+    if (enabled && !proxyList(c, "KeyFrames").empty())
+    {
+      cue = c;
+      cueValues = values;
+      break;
+    }
+    skipped += std::string(skipped.empty() ? "" : "; ") + "id " + c->GetAttribute("id") +
+      (enabled ? " has no key frames" : " is disabled");
+  }
+  if (!cue)
+  {
+    throw InputError(file + ": no usable camera track (CameraAnimationCue " + skipped + ")");
+  }
+  StateCamera out;
+  out.Cue = std::string("CameraAnimationCue id ") + cue->GetAttribute("id");
+  out.Interpolation =
+    cueValues.count("Interpolation") && cueValues["Interpolation"][0] == 0.0 ? "linear" : "spline";
+  if (cueValues.count("Mode") && cueValues["Mode"][0] != 0.0)
+  {
+    // Path-based and follow-data tracks still store a camera per key frame: those are read.
+    std::cerr << file << ": note: " << out.Cue << " is in "
+              << (cueValues["Mode"][0] == 1.0 ? "Path-based" : "Follow-data")
+              << " mode; lct-render interpolates the cameras of its key frames\n";
+  }
+  if (scene)
+  {
+    auto values = ReadProperties(scene,
+      { { "StartTime", { 1, -Limits::MaxTime, Limits::MaxTime } },
+        { "EndTime", { 1, -Limits::MaxTime, Limits::MaxTime } } },
+      file + ": AnimationScene id " + scene->GetAttribute("id") + ": ");
+    out.Start = values.count("StartTime") ? values["StartTime"][0] : 0.0;
+    out.End = values.count("EndTime") ? values["EndTime"][0] : 1.0;
+  }
+  if (!(out.End > out.Start))
+  {
+    throw InputError(file + ": the AnimationScene's EndTime " + Num(out.End) +
+      " is not after its StartTime " + Num(out.Start));
+  }
+  const double span = out.End - out.Start;
+  const bool relative = cueValues.count("TimeMode") && cueValues["TimeMode"][0] == 1.0;
+  const double cs = cueValues.count("StartTime") ? cueValues["StartTime"][0] : 0.0;
+  const double ce = cueValues.count("EndTime") ? cueValues["EndTime"][0] : 1.0;
+  const double cueStart = relative ? out.Start + cs : out.Start + cs * span;
+  const double cueEnd = relative ? out.Start + ce : out.Start + ce * span;
+  // The view the cue animates holds the projection (a key frame has no ParallelProjection).
+  bool parallel = false;
+  const auto views = proxyList(cue, "AnimatedProxy");
+  if (!views.empty() && proxies.count(views[0]))
+  {
+    auto values = ReadProperties(proxies[views[0]],
+      { { "CameraParallelProjection", { 1, 0.0, 1.0 } } }, file + ": view id " + views[0] + ": ");
+    parallel = values.count("CameraParallelProjection") && values["CameraParallelProjection"][0];
+  }
+  const auto frames = proxyList(cue, "KeyFrames");
+  if (frames.size() > Limits::MaxKeys)
+  {
+    throw InputError(file + ": " + out.Cue + " has " + std::to_string(frames.size()) +
+      " key frames; at most " + std::to_string(Limits::MaxKeys) + " are accepted");
+  }
+  auto keyProperties = CameraProperties("");
+  keyProperties.erase("ParallelProjection");
+  keyProperties["KeyTime"] = { 1, 0.0, 1.0 };
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    const std::string where = out.Cue + ".KeyFrames[" + std::to_string(k) +
+      "] (CameraKeyFrame id " + Printable(frames[k]) + ")";
+    auto it = proxies.find(frames[k]);
+    if (it == proxies.end() || std::string(it->second->GetAttribute("type")) != "CameraKeyFrame")
+    {
+      throw InputError(
+        file + ": " + where + ": the state has no CameraKeyFrame proxy with this id");
+    }
+    auto values = ReadProperties(it->second, keyProperties, file + ": " + where + ": ");
+    for (const char* required : { "KeyTime", "Position", "FocalPoint" })
+    {
+      if (!values.count(required))
+      {
+        throw InputError(file + ": " + where + ": " + required + " is missing");
+      }
+    }
+    values["ParallelProjection"] = { parallel ? 1.0 : 0.0 };
+    const double time = cueStart + values["KeyTime"][0] * (cueEnd - cueStart);
+    CameraKey key = CameraFromProperties(values,
+      { "Position", "FocalPoint", "ViewUp", "ViewAngle", "ParallelScale", "ParallelProjection" },
+      time, file + ": " + where);
+    key.Path = where;
+    out.Keys.push_back(key);
+  }
+  if (out.Keys.size() < 2)
+  {
+    throw InputError(file + ": " + out.Cue + " has " + std::to_string(out.Keys.size()) +
+      " key frame, but a camera path needs at least 2");
+  }
+  SortByTime(out.Keys, file);
+  return out;
+}
+
+/// Reads and validates a keyframe file; throws InputError. An XML file is refused with what is
+/// accepted (a ParaView file given as the keys file is read as JSON otherwise, and JSON's
+/// message about '<' helps nobody). `cameraOptional`: camera keys come from elsewhere.
+inline Keys ReadFile(const std::string& file, bool cameraOptional = false)
+{
+  const std::string text = ReadSmallFile(file, Limits::MaxKeysFileBytes, "keys file");
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '<')
+  {
+    throw InputError(file + ": an XML file given as the keys file. " + AcceptedInputs +
+      " (give ParaView files their .pvcc or .pvsm extension)");
+  }
+  Parser parser(file);
+  parser.SetCameraOptional(cameraOptional);
+  return parser.Read(text);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1783,6 +2639,40 @@ inline void CheckLegacyVtk(MeshText& text)
   }
 }
 
+/// glTF 2.0: a .glb's 12-byte header (magic "glTF", version 2, the length of the whole file), a
+/// .gltf's JSON (an object with "asset"). Buffers, accessors and the rest are vtkGLTFReader's,
+/// in the reading child process.
+inline void CheckGltf(MeshText& text, bool binary)
+{
+  const std::string& d = text.data();
+  if (binary)
+  {
+    const auto* p = reinterpret_cast<const unsigned char*>(d.data());
+    if (d.size() < 12 || d.compare(0, 4, "glTF") != 0)
+    {
+      text.Fail("not a binary glTF file (no \"glTF\" magic in its 12-byte header)");
+    }
+    const double version = BinaryValue(p + 4, { 4, true, false }, false);
+    const double length = BinaryValue(p + 8, { 4, true, false }, false);
+    if (version != 2.0)
+    {
+      text.Fail("binary glTF version " + Num(version) + "; vtkGLTFReader reads version 2");
+    }
+    if (length != static_cast<double>(d.size()))
+    {
+      text.Fail("the glTF header declares " + Num(length) + " bytes, but the file has " +
+        std::to_string(d.size()) + " (truncated or padded)");
+    }
+    return;
+  }
+  Parser json(text.file());
+  const nlohmann::json doc = json.Parse(d);
+  if (!doc.is_object() || !doc.contains("asset"))
+  {
+    text.Fail("not a glTF file (no JSON object with \"asset\")");
+  }
+}
+
 /// VTK XML PolyData: the NumberOf* attributes of each Piece against the limits (the reader
 /// allocates them before it reads a byte of data); the XML and its data are VTK's.
 inline void CheckVtp(MeshText& text)
@@ -1791,7 +2681,7 @@ inline void CheckVtp(MeshText& text)
   const size_t end = std::min(d.size(), d.find("<AppendedData"));
   long long points = 0, cells = 0;
   for (const char* attribute : { "NumberOfPoints=\"", "NumberOfVerts=\"", "NumberOfLines=\"",
-         "NumberOfStrips=\"", "NumberOfPolys=\"" })
+         "NumberOfStrips=\"", "NumberOfPolys=\"", "NumberOfCells=\"" })
   {
     for (size_t at = d.find(attribute); at < end; at = d.find(attribute, at + 1))
     {
@@ -1852,9 +2742,13 @@ inline void CheckMeshFile(const std::string& file, const std::string& ext)
   {
     CheckLegacyVtk(text);
   }
+  else if (ext == ".glb" || ext == ".gltf")
+  {
+    CheckGltf(text, ext == ".glb");
+  }
   else
   {
-    CheckVtp(text);
+    CheckVtp(text); // .vtp and .vtu
   }
 }
 

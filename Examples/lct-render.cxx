@@ -12,11 +12,20 @@
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkCameraPathMetric.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCollection.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataGeometryFilter.h"
+#include "vtkConeSource.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGLTFReader.h"
+#include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightKit.h"
 #include "vtkLogger.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOBJReader.h"
@@ -24,20 +33,25 @@
 #include "vtkOggTheoraWriter.h"
 #include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
+#include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
+#include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkTransformInterpolatorLCT.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -48,12 +62,16 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <memory>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -68,56 +86,145 @@ using RenderKeys::Num;
 constexpr int MetricSamples = 201;
 
 const char* const Usage =
-  R"(usage: lct-render [options] [keys.json] [view1.pvcc view2.pvcc ...]
+  R"(usage: lct-render [options] [keys.json] [state.pvsm | view1.pvcc view2.pvcc ...]
+       lct-render --describe [options] [keys.json] [...]
+       lct-render assemble DIR [--fps N]
 
 Renders a keyframed camera flight through vtkCameraInterpolatorLCT (props through
 vtkTransformInterpolatorLCT) offscreen to DIR/frame_NNNN.png, DIR/video.ogv (Ogg Theora) and
 DIR/contact_sheet.png (4x4 evenly spaced frames), and prints the path-quality metric
 (vtkCameraPathMetric: mean excess path length of the scene's points, camera space and screen,
-over 201 cameras evenly spaced in key time, whatever --frames is).
-Without keys.json it renders the built-in keys: a 130-degree turn with a window-centre shift and a
-zoom, and the cone tumbling 720 degrees while it shears.
+over 201 cameras evenly spaced in the camera's key time, whatever --frames is).
+
+What is drawn: the objects of the keys file's "scene" section and the --mesh meshes, nothing
+else. The built-in demo scene (floor, pedestal, the Wuson model, sphere, cube, cone; 6 x 6 units
+on the floor y = 0 around the origin, named floor, pedestal, model, sphere, cube, cone) is drawn
+only with --demo-scene, or when neither a keys file nor --mesh is given. Without a keys file the
+built-in keys play: a 130-degree turn with a window-centre shift and a zoom, and the cone
+tumbling 720 degrees while it shears (the cone's keys only with the demo scene).
 
 options:
-  --frames N         render N frames (default 48, 1 <= N <= 1000000); frame i is at key time
-                     tmin + i/(N-1) (tmax-tmin)
+  --frames N         render N frames (default 48, 1 <= N <= 1000000); frame i is at time
+                     tmin + i/(N-1) (tmax-tmin) (see "time" below)
   --frames A:B/N     render only frames A..B-1 of N (files keep their global numbers, so the
-                     slices of several runs equal one full run); no video or contact sheet.
+                     slices of several runs equal one full run); no video or contact sheet
+                     (`lct-render assemble DIR` makes them once all slices are done).
                      A:B alone means A:B/48
-  --size WxH         image size (default 640x360; 16..16384 per side, at most 2^26 = 67108864
-                     pixels; above 2^22 pixels fewer multisamples are used: 2^25 samples at most)
+  --size WxH         image size (default: the scene's "size", else 640x360; 16..16384 per side,
+                     at most 2^26 = 67108864 pixels; above 2^22 pixels fewer multisamples are
+                     used: 2^25 samples at most)
+  --fps N            frame rate of video.ogv (default 24, 1 <= N <= 240)
   --interpolation linear|spline|bspline|subdivision
                      curve scheme for the camera and every prop (overrides the file)
   --compare          split screen: left vtkCameraInterpolatorLCT, right VTK's vtkCameraInterpolator
                      on the same camera keys (bspline/subdivision: VTK uses its spline; at most
                      1000 camera keys: VTK's interpolator initialises in quadratic time)
-  --mesh NAME=FILE   add a mesh (.vtp .vtk .stl .ply .obj, world coordinates) that props.NAME
-                     can animate (repeatable, at most 16)
+  --mesh NAME=FILE   add a mesh (a mesh file as in scene objects, world coordinates) that
+                     props.NAME can animate (repeatable; at most 16 mesh files in all)
+  --demo-scene       draw the built-in demo scene too
+  --describe         print the scene's bounds, each object's bounds, arrays and visibility, the
+                     time ranges and the camera keys, then exit (writes nothing, needs no X)
   --out DIR          output directory (default out/render; created if missing)
+  --overwrite        replace the frames of a different earlier run in DIR (see "output")
   -h, --help         this help
 
-keys.json:
-  {"camera": {"interpolation": "spline", "consistent_rotation": false,
-              "keys": [{"time": 0, "position": [x,y,z], "focal_point": [x,y,z], "view_up": [0,1,0],
-                        "view_angle": 30, "window_center": [0,0], "view_shear": [0,0,1],
-                        "parallel_scale": 1, "parallel": false,
-                        "clipping_range": [near, far]}, ...]},       (at least 2 keys)
-   "props": {"NAME": {"interpolation": "spline", "consistent_rotation": false,
-                      "keys": [{"time": 0, "matrix": [16 numbers, row-major]}
-                               or {"time": 0, "translate": [x,y,z], "rotate": [deg, ax,ay,az],
-                                   "scale": [sx,sy,sz], "shear": [xy, xz, yz]}, ...]}}}
-  Only time, position and focal_point are required. Keys may come in any order; their times must
-  differ. A prop key M = translate rotate shear scale is applied about the prop's centre (its
-  bounding-box centre in the scene), in world axes. NAME is one of the default scene's model,
-  sphere, cube, cone, floor, pedestal, or a --mesh name.
+a complete keys file (valid JSON, every field used once; it needs a part.vtu with a point
+array "temperature" beside it; Render.HelpExample checks that it reads):
+  {"scene": {
+     "size": [640, 360], "anti_aliasing": "msaa",
+     "background": [0.12, 0.14, 0.2], "background_top": [0.45, 0.55, 0.7],
+     "lights": [{"position": [5, 8, 5], "focal_point": [0, 0, 0], "color": [1, 1, 0.95],
+                 "intensity": 0.9, "camera": false}],
+     "objects": {
+       "part": {"file": "part.vtu", "color_by": "temperature", "color_map": "viridis",
+                "scalar_range": [0, 1]},
+       "ground": {"source": "plane", "center": [0, 0, 0], "size": [6, 6], "normal": [0, 1, 0],
+                  "color": [0.7, 0.7, 0.65], "opacity": 1, "representation": "surface",
+                  "visible": true, "line_width": 1, "point_size": 3},
+       "ball": {"source": "sphere", "center": [1.5, 0.5, 0], "radius": 0.5, "resolution": 32},
+       "box": {"source": "cube", "center": [-1.5, 0.5, 0], "size": [1, 1, 1]},
+       "tip": {"source": "cone", "center": [0, 0.5, -1.5], "radius": 0.5, "height": 1,
+               "direction": [0, 1, 0], "resolution": 32, "representation": "wireframe"},
+       "frame": {"source": "axes", "center": [-2.5, 0, 2.5], "length": 1}}},
+   "camera": {"interpolation": "spline", "consistent_rotation": false,
+              "keys": [{"time": 0, "position": [5, 3, 6], "focal_point": [0, 0.5, 0],
+                        "view_up": [0, 1, 0], "view_angle": 30, "window_center": [0, 0],
+                        "view_shear": [0, 0, 1], "parallel_scale": 1, "parallel": false,
+                        "clipping_range": [0.5, 30]},
+                       {"time": 2, "position": [-5, 3, 6], "focal_point": [0, 0.5, 0],
+                        "clipping_range": [0.5, 30]}]},
+   "props": {"ball": {"interpolation": "spline", "consistent_rotation": false,
+                      "keys": [{"time": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
+                               {"time": 2, "translate": [0, 1, 0], "rotate": [90, 0, 1, 0],
+                                "scale": [1, 1.5, 1], "shear": [0.2, 0, 0]}]}}}
+
+fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = msaa (msaa, fxaa,
+  none), background = [0.96, 0.95, 0.92], background_top (a gradient; none), lights = "kit" (a
+  vtkLightKit; "headlight"; or 1..16 lights: position, focal_point = [0,0,0], color = [1,1,1],
+  intensity = 1, camera = false (true: moves with the camera)). Objects: "file" or "source"
+  (sphere: center = [0,0,0], radius = 0.5, resolution = 32; cube: center, size = [1,1,1];
+  cone: center, radius = 0.5, height = 1, direction = [0,1,0], resolution = 32; plane: center,
+  size = [1,1], normal = [0,0,1]; axes: center, length = 1); color (none: the file's own RGB
+  colours or a palette's; axes are red, green, blue), opacity = 1, representation = surface
+  (surface, wireframe, points), visible = true, color_by (none), color_map = cool to warm
+  (cool to warm, viridis, rainbow, grayscale), scalar_range = the array's, line_width = 1,
+  point_size = 3. Camera keys: time, position, focal_point required; view_up = [0,1,0],
+  view_angle = 30, window_center = [0,0], view_shear = [0,0,1], parallel_scale = 1,
+  parallel = false, clipping_range (none: reset per frame); at least 2 keys. Prop keys: time,
+  and matrix (16 numbers, row-major, last row 0 0 0 1) or translate = [0,0,0],
+  rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0].
+  Unknown keys are errors (a misspelt field would otherwise silently keep its default).
+  Object files: .vtp .vtu .vtk (legacy POLYDATA) .stl .ply .obj .glb .gltf; a relative name is
+  relative to the keys file's folder. color_by names a point array (else a cell array); arrays
+  of several components are coloured by their magnitude. Colours are [r, g, b] in [0, 1].
+  Without a "scene" section: no objects (give --mesh or --demo-scene), VTK's headlight, the
+  default background.
+  props.NAME animates the object NAME (a scene object, a --mesh name or, with the demo scene,
+  a demo object). A prop key M = translate rotate shear scale is applied about the object's
+  centre (its bounding-box centre in the scene), in world axes. shear [xy, xz, yz]: x moves by
+  xy times y and by xz times z, y moves by yz times z (x' = x + xy y + xz z, y' = y + yz z).
+  Keys may come in any order; their times must differ.
+
+time: the frames span from the earliest key of any track (camera, each prop) to the latest.
+  Each track is clamped to its own key range: before its first key it holds the first key,
+  after its last key the last (so a prop whose keys end at t = 2 stands still while the camera
+  flies on to t = 4). The path metric measures the camera over its own key range.
+clipping range: without clipping_range (the default), each frame's near and far planes are
+  reset from the bounds of the visible objects (vtkRenderer::ResetCameraClippingRange); with
+  clipping_range on every camera key, the interpolated range is used as it is. Some keys with
+  and some without is an error.
+
+ParaView files, as the camera keys (replacing the keys file's camera, which may then be left
+out so that the keys file gives only the scene and props):
+  .pvcc (ParaView's "Save Camera"), given in order: one key each, at t = 0, 1, 2, ...
+  .pvsm (a saved state): the first enabled CameraAnimationCue (the Animation View's Camera
+        track) with its CameraKeyFrame proxies: KeyTime, Position, FocalPoint, ViewUp,
+        ViewAngle, ParallelScale, the view's CameraParallelProjection, the cue's Interpolation
+        (linear or spline, unless --interpolation) at time StartTime + KeyTime (EndTime -
+        StartTime) of the cue, whose times are fractions of the AnimationScene's StartTime ..
+        EndTime (TimeMode Normalized, ParaView's default) or offsets from its StartTime
+        (Relative). Path-based and follow-data tracks: the key frames' cameras are used.
+  Any other XML is refused with what is accepted.
+
+output: frames, video and sheet are written under a temporary name (.NAME.PID.part) and renamed
+when complete; a failed run removes its temporary files and never leaves a partial file under a
+final name. DIR/manifest.json records the run (frame count, size, fps, interpolation, compare,
+scene, and each input file's path, size and FNV-1a hash). A run into a DIR that holds frames of
+a different run (or frames without a manifest) is refused unless --overwrite, which removes
+those frames, video and sheet first; slices of one run (same parameters and inputs) add up.
+`lct-render assemble DIR [--fps N]` checks that DIR holds every frame of its manifest's run at
+its size and writes video.ogv (at the manifest's fps unless --fps) and contact_sheet.png from
+them (needs no X). Progress: per-frame lines with the rate and an ETA.
 
 limits (input outside them is refused with a message naming the file and the key):
   keys file <= 32 MiB, JSON nesting <= 64; <= 10000 keys per track (camera, each prop)
-  |time| <= 1e12; coordinates (position, focal_point, view_up, matrix, translate) within +-1e15
-  view_angle in [1e-08, 179] (vtkCamera's own range); parallel_scale, clipping_range in
-  [1e-12, 1e15]; window_center, view_shear, shear within +-1000; scale in [1e-09, 1e09];
-  rotate angle within +-1e6 degrees
-  .pvcc file <= 1 MiB; every value of its Camera* properties a complete, finite decimal number
+  |time| <= 1e12; coordinates (position, focal_point, view_up, matrix, translate, center)
+  within +-1e15; view_angle in [1e-08, 179] (vtkCamera's own range); parallel_scale,
+  clipping_range, radius, height, size, length in [1e-12, 1e15]; window_center, view_shear,
+  shear within +-1000; scale in [1e-09, 1e09]; rotate angle within +-1e6 degrees;
+  <= 256 scene objects, <= 16 lights, resolution 3..1024, line_width and point_size 0.1..100
+  .pvcc file <= 1 MiB, .pvsm <= 64 MiB, XML nesting <= 256; every value of the properties read
+  a complete, finite decimal number
 
 meshes: a file is checked before a VTK reader sees it, then VTK's reader runs in a child
 process (a crash or a runaway allocation of the reader is an error message, not a crash):
@@ -132,13 +239,10 @@ process (a crash or a runaway allocation of the reader is an error message, not 
            point index (v, vt, vn, negative ones too) in range
   .vtk     legacy POLYDATA: header, declared point and cell counts against the limits and the
            file size; ASCII bodies: every point and cell token and index
-  .vtp     declared NumberOf* counts against the limits; the XML and its data are VTK's
+  .vtp .vtu  declared NumberOf* counts against the limits; the XML and its data are VTK's
+  .glb     the 12-byte header: magic, version 2, length = the file's size; .gltf: a JSON
+           object with "asset"; the rest is VTK's vtkGLTFReader (in the child process)
 
-ParaView camera files (.pvcc, from ParaView's "Save Camera"), given in order, become the camera
-keys at t = 0, 1, 2, ... (replacing the keys file's camera keys).
-
-Every output is written under a temporary name (.NAME.PID.part) and renamed when complete; a
-failed run removes its temporary files and never leaves a partial file under a final name.
 Run it under `xvfb-run -a` when there is no display.
 exit codes: 0 ok, 1 error (bad input, failed interpolation, failed write), 2 usage,
 125 no DISPLAY
@@ -365,13 +469,25 @@ struct Options
   int Last = -1; // exclusive; -1: Frames
   int Width = 640;
   int Height = 360;
+  bool SizeGiven = false; // --size (else the scene's size, else 640x360)
+  int Fps = 24;
   std::string Interpolation; // empty: from the keys
   bool Compare = false;
+  bool DemoScene = false;
+  bool Describe = false;
+  bool Overwrite = false;
   std::string Out = "out/render";
   std::string KeysFile;
   std::vector<std::string> CameraFiles; // ParaView .pvcc files, one camera key each
+  std::string StateFile;                // a ParaView .pvsm state with a camera track
   std::vector<std::pair<std::string, std::string>> Meshes;
 };
+
+bool EndsWith(const std::string& s, const char* tail)
+{
+  const size_t n = std::strlen(tail);
+  return s.size() > n && s.compare(s.size() - n, n, tail) == 0;
+}
 
 /// A decimal integer in [0, 999999999] (10 digits or more, signs, exponents: no).
 bool ParseInt(const std::string& s, int& out)
@@ -407,6 +523,26 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
     else if (a == "--compare")
     {
       o.Compare = true;
+    }
+    else if (a == "--demo-scene")
+    {
+      o.DemoScene = true;
+    }
+    else if (a == "--describe")
+    {
+      o.Describe = true;
+    }
+    else if (a == "--overwrite")
+    {
+      o.Overwrite = true;
+    }
+    else if (a == "--fps")
+    {
+      if (!value(v) || !ParseInt(v, o.Fps) || o.Fps < 1 || o.Fps > Limits::MaxFps)
+      {
+        return "--fps expects a frame rate N, 1 <= N <= " + std::to_string(Limits::MaxFps) +
+          (v.empty() ? std::string("") : " (got " + RenderKeys::Printable(v) + ")");
+      }
     }
     else if (a == "--frames")
     {
@@ -460,6 +596,7 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
         return expect + " (" + v + " is " +
           std::to_string(static_cast<long long>(o.Width) * o.Height) + " pixels)";
       }
+      o.SizeGiven = true;
     }
     else if (a == "--interpolation")
     {
@@ -494,13 +631,22 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
     {
       return "unknown option " + RenderKeys::Printable(a);
     }
-    else if (a.size() > 5 && a.compare(a.size() - 5, 5, ".pvcc") == 0)
+    else if (EndsWith(a, ".pvcc"))
     {
       if (o.CameraFiles.size() >= Limits::MaxKeys)
       {
         return "at most " + std::to_string(Limits::MaxKeys) + " .pvcc files";
       }
       o.CameraFiles.push_back(a);
+    }
+    else if (EndsWith(a, ".pvsm"))
+    {
+      if (!o.StateFile.empty())
+      {
+        return "more than one ParaView state file (" + RenderKeys::Printable(o.StateFile) + ", " +
+          RenderKeys::Printable(a) + ")";
+      }
+      o.StateFile = a;
     }
     else if (o.KeysFile.empty())
     {
@@ -515,6 +661,11 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
   if (o.Last < 0)
   {
     o.Last = o.Frames;
+  }
+  if (!o.StateFile.empty() && !o.CameraFiles.empty())
+  {
+    return "camera keys from both a state file (" + RenderKeys::Printable(o.StateFile) +
+      ") and .pvcc files: give one or the other";
   }
   return "";
 }
@@ -539,7 +690,8 @@ int CameraType(const std::string& name)
 // ---------------------------------------------------------------------------------------------
 // Meshes
 
-/// Keeps what lct-render renders of a mesh: points, cells, well-formed point normals and colours.
+/// Keeps what lct-render renders of a mesh: points, cells, well-formed point normals and
+/// colours, and the numeric point and cell arrays (for a scene object's color_by).
 vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* mesh)
 {
   auto out = vtkSmartPointer<vtkPolyData>::New();
@@ -568,18 +720,59 @@ vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* mesh)
   {
     out->GetPointData()->SetScalars(colors);
   }
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  using Fields = std::tuple<vtkFieldData*, vtkFieldData*, vtkIdType>;
+  for (auto [from, to, count] : { Fields{ mesh->GetPointData(), out->GetPointData(), n },
+         Fields{ mesh->GetCellData(), out->GetCellData(), cells } })
+  {
+    for (int i = 0; i < from->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* a = from->GetArray(i);
+      if (a && a->GetName() && *a->GetName() && a->GetNumberOfTuples() == count &&
+        a->GetNumberOfComponents() <= 16 && !to->GetArray(a->GetName()))
+      {
+        to->AddArray(a);
+      }
+    }
+  }
   return out;
 }
 
-/// Reads `file` with VTK's reader for its extension (in the child process).
+/// The mesh formats lct-render reads, by lower-case extension, and VTK's reader for each.
+const std::map<std::string, const char*>& MeshReaders()
+{
+  static const std::map<std::string, const char*> readers = { { ".vtp", "vtkXMLPolyDataReader" },
+    { ".vtu", "vtkXMLUnstructuredGridReader" }, { ".vtk", "vtkPolyDataReader" },
+    { ".stl", "vtkSTLReader" }, { ".ply", "vtkPLYReader" }, { ".obj", "vtkOBJReader" },
+    { ".glb", "vtkGLTFReader" }, { ".gltf", "vtkGLTFReader" } };
+  return readers;
+}
+
+/// Reads `file` with VTK's reader for its extension (in the child process); volumes and
+/// multi-block scenes become their outer surface.
 vtkSmartPointer<vtkPolyData> ReadWithVTK(const std::string& file, const std::string& ext)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
+  vtkSmartPointer<vtkAlgorithm> surface;
   if (ext == ".vtp")
   {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     r->SetFileName(file.c_str());
     reader = r;
+  }
+  else if (ext == ".vtu")
+  {
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(file.c_str());
+    reader = r;
+    surface = vtkSmartPointer<vtkGeometryFilter>::New();
+  }
+  else if (ext == ".glb" || ext == ".gltf")
+  {
+    auto r = vtkSmartPointer<vtkGLTFReader>::New();
+    r->SetFileName(file.c_str());
+    reader = r;
+    surface = vtkSmartPointer<vtkCompositeDataGeometryFilter>::New();
   }
   else if (ext == ".vtk")
   {
@@ -605,8 +798,14 @@ vtkSmartPointer<vtkPolyData> ReadWithVTK(const std::string& file, const std::str
     r->SetFileName(file.c_str());
     reader = r;
   }
-  reader->Update();
-  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  vtkAlgorithm* last = reader;
+  if (surface)
+  {
+    surface->SetInputConnection(reader->GetOutputPort());
+    last = surface;
+  }
+  last->Update();
+  auto* mesh = vtkPolyData::SafeDownCast(last->GetOutputDataObject(0));
   if (!mesh)
   {
     throw InputError(file + ": no polygonal data could be read");
@@ -666,10 +865,15 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
   std::string ext = fs::path(file).extension().string();
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".vtp" && ext != ".vtk" && ext != ".stl" && ext != ".ply" && ext != ".obj")
+  if (!MeshReaders().count(ext))
   {
+    std::string known;
+    for (const auto& r : MeshReaders())
+    {
+      known += (known.empty() ? "" : " ") + r.first;
+    }
     throw InputError(file + ": unsupported mesh format \"" + RenderKeys::Printable(ext) +
-      "\" (expected .vtp .vtk .stl .ply .obj)");
+      "\" (expected " + known + ")");
   }
   RenderKeys::CheckMeshFile(file, ext);
 
@@ -748,11 +952,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
   {
   }
-  const std::string reader = ext == ".vtp" ? "vtkXMLPolyDataReader"
-    : ext == ".vtk"                        ? "vtkPolyDataReader"
-    : ext == ".stl"                        ? "vtkSTLReader"
-    : ext == ".ply"                        ? "vtkPLYReader"
-                                           : "vtkOBJReader";
+  const std::string reader = MeshReaders().at(ext);
   if (WIFSIGNALED(status))
   {
     const int sig = WTERMSIG(status);
@@ -791,6 +991,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
 struct Prop
 {
   std::string Name;
+  std::string Origin; // "demo scene", "keys.json: scene.objects.NAME", "--mesh NAME=FILE"
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkMatrix4x4> Rest; // the actor's matrix before animation
   double Center[3] = { 0.0, 0.0, 0.0 };
@@ -844,7 +1045,8 @@ std::string CheckCamera(vtkCamera* c)
 bool PropMatrix(Prop& p, double t, vtkMatrix4x4* out, std::string& why)
 {
   vtkNew<vtkMatrix4x4> k;
-  if (!p.Path->InterpolateTransform(t, k))
+  // Each track holds its first and last key outside its own range (the frames may span more).
+  if (!p.Path->InterpolateTransform(std::clamp(t, p.Path->GetMinimumT(), p.Path->GetMaximumT()), k))
   {
     why = "vtkTransformInterpolatorLCT failed: " + p.Errors->Take();
     return false;
@@ -1054,6 +1256,757 @@ std::string CheckOutput(const fs::path& dir, const Options& opt, bool full)
   return "";
 }
 
+/// "frame_0042.png".
+std::string FrameName(int i)
+{
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.png", i);
+  return name;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The scene section
+
+/// Colours of objects that have none of their own (scene objects without "color", --mesh).
+const double Palette[6][3] = { { 0.6, 0.3, 0.7 }, { 0.9, 0.8, 0.2 }, { 0.2, 0.7, 0.7 },
+  { 0.9, 0.5, 0.6 }, { 0.35, 0.55, 0.85 }, { 0.55, 0.75, 0.35 } };
+
+/// A source object of the scene section as poly data.
+vtkSmartPointer<vtkPolyData> MakeSource(const RenderKeys::SceneObject& o)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  if (o.Source == "axes")
+  {
+    // Three lines from the centre along +x, +y, +z, coloured red, green, blue per cell.
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(o.Center);
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkUnsignedCharArray> colors;
+    colors->SetNumberOfComponents(3);
+    colors->SetName("axis colours");
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      double end[3] = { o.Center[0], o.Center[1], o.Center[2] };
+      end[axis] += o.Length;
+      const vtkIdType line[2] = { 0, points->InsertNextPoint(end) };
+      lines->InsertNextCell(2, line);
+      const unsigned char rgb[3] = { static_cast<unsigned char>(axis == 0 ? 220 : 40),
+        static_cast<unsigned char>(axis == 1 ? 180 : 40),
+        static_cast<unsigned char>(axis == 2 ? 220 : 40) };
+      colors->InsertNextTypedTuple(rgb);
+    }
+    out->SetPoints(points);
+    out->SetLines(lines);
+    out->GetCellData()->SetScalars(colors);
+    return out;
+  }
+  vtkSmartPointer<vtkPolyDataAlgorithm> source;
+  if (o.Source == "sphere")
+  {
+    auto s = vtkSmartPointer<vtkSphereSource>::New();
+    s->SetCenter(o.Center);
+    s->SetRadius(o.Radius);
+    s->SetThetaResolution(o.Resolution);
+    s->SetPhiResolution(std::max(3, o.Resolution / 2 + 1));
+    source = s;
+  }
+  else if (o.Source == "cube")
+  {
+    auto s = vtkSmartPointer<vtkCubeSource>::New();
+    s->SetCenter(o.Center);
+    s->SetXLength(o.Size[0]);
+    s->SetYLength(o.Size[1]);
+    s->SetZLength(o.Size[2]);
+    source = s;
+  }
+  else if (o.Source == "cone")
+  {
+    auto s = vtkSmartPointer<vtkConeSource>::New();
+    s->SetCenter(o.Center);
+    s->SetRadius(o.Radius);
+    s->SetHeight(o.Height);
+    s->SetDirection(o.Direction);
+    s->SetResolution(o.Resolution);
+    source = s;
+  }
+  else // plane
+  {
+    auto s = vtkSmartPointer<vtkPlaneSource>::New();
+    s->SetOrigin(-0.5 * o.Size[0], -0.5 * o.Size[1], 0.0);
+    s->SetPoint1(0.5 * o.Size[0], -0.5 * o.Size[1], 0.0);
+    s->SetPoint2(-0.5 * o.Size[0], 0.5 * o.Size[1], 0.0);
+    s->SetCenter(o.Center[0], o.Center[1], o.Center[2]);
+    s->SetNormal(o.Direction[0], o.Direction[1], o.Direction[2]); // turns it about its centre
+    source = s;
+  }
+  source->Update();
+  out->DeepCopy(source->GetOutput());
+  return out;
+}
+
+/// The colour transfer function of a colour map over [lo, hi].
+vtkSmartPointer<vtkColorTransferFunction> MakeColorMap(
+  const std::string& name, double lo, double hi)
+{
+  auto lut = vtkSmartPointer<vtkColorTransferFunction>::New();
+  if (name == "cool to warm")
+  {
+    lut->SetColorSpaceToDiverging();
+  }
+  else
+  {
+    lut->SetColorSpaceToLab();
+  }
+  for (const auto& p : RenderKeys::ColorMaps().at(name))
+  {
+    lut->AddRGBPoint(lo + p[0] * (hi - lo), p[1], p[2], p[3]);
+  }
+  return lut;
+}
+
+/// The names of an object's point and cell arrays, for messages.
+std::string ArrayNames(vtkPolyData* data)
+{
+  std::string names;
+  for (auto [fields, kind] :
+    { std::pair<vtkFieldData*, const char*>{ data->GetPointData(), "point" },
+      std::pair<vtkFieldData*, const char*>{ data->GetCellData(), "cell" } })
+  {
+    for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* a = fields->GetArray(i);
+      if (a && a->GetName())
+      {
+        names += (names.empty() ? "" : ", ") + RenderKeys::Printable(a->GetName()) + " (" + kind +
+          ", " + std::to_string(a->GetNumberOfComponents()) + " component" +
+          (a->GetNumberOfComponents() == 1 ? "" : "s") + ")";
+      }
+    }
+  }
+  return names.empty() ? "none" : names;
+}
+
+/// Gives the actor of a scene object its appearance. `where` ("keys.json: scene.objects.x")
+/// prefixes the messages.
+void ApplyLook(const RenderKeys::Appearance& look, vtkActor* actor, vtkPolyData* data, size_t index,
+  const std::string& where)
+{
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  vtkProperty* property = actor->GetProperty();
+  if (!look.ColorBy.empty())
+  {
+    vtkDataArray* array = data->GetPointData()->GetArray(look.ColorBy.c_str());
+    const bool point = array != nullptr;
+    if (!array)
+    {
+      array = data->GetCellData()->GetArray(look.ColorBy.c_str());
+    }
+    if (!array)
+    {
+      throw InputError(where + ".color_by: the object has no point or cell array \"" +
+        RenderKeys::Printable(look.ColorBy) + "\" (its arrays: " + ArrayNames(data) + ")");
+    }
+    const int components = array->GetNumberOfComponents();
+    double range[2] = { look.ScalarRange[0], look.ScalarRange[1] };
+    if (!look.HasScalarRange)
+    {
+      array->GetRange(range, components > 1 ? -1 : 0); // -1: the magnitude
+      if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+      {
+        throw InputError(where + ".color_by: the array \"" + RenderKeys::Printable(look.ColorBy) +
+          "\" has values that are not finite; give scalar_range");
+      }
+      if (range[0] == range[1]) // a constant array: one colour, the map's middle
+      {
+        range[0] -= 0.5;
+        range[1] += 0.5;
+      }
+    }
+    auto lut = MakeColorMap(look.ColorMap, range[0], range[1]);
+    if (components > 1)
+    {
+      lut->SetVectorModeToMagnitude();
+    }
+    mapper->SetLookupTable(lut);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetColorModeToMapScalars();
+    if (point)
+    {
+      mapper->SetScalarModeToUsePointFieldData();
+    }
+    else
+    {
+      mapper->SetScalarModeToUseCellFieldData();
+    }
+    mapper->SelectColorArray(look.ColorBy.c_str());
+    mapper->ScalarVisibilityOn();
+  }
+  else if (look.HasColor)
+  {
+    mapper->ScalarVisibilityOff();
+    property->SetColor(look.Color[0], look.Color[1], look.Color[2]);
+  }
+  else if (!data->GetPointData()->GetScalars() && !data->GetCellData()->GetScalars())
+  {
+    property->SetColor(Palette[index % 6][0], Palette[index % 6][1], Palette[index % 6][2]);
+  }
+  property->SetOpacity(look.Opacity);
+  if (look.Representation == "wireframe")
+  {
+    property->SetRepresentationToWireframe();
+  }
+  else if (look.Representation == "points")
+  {
+    property->SetRepresentationToPoints();
+  }
+  property->SetLineWidth(static_cast<float>(look.LineWidth));
+  property->SetPointSize(static_cast<float>(look.PointSize));
+  actor->SetVisibility(look.Visible ? 1 : 0);
+}
+
+/// An actor drawing `data`.
+vtkSmartPointer<vtkActor> MakeMeshActor(vtkPolyData* data)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+/// "x [a, b]  y [c, d]  z [e, f]", to 7 digits: the points are float32, and 0.01 is easier to
+/// place a camera by than 0.009999999776482582.
+std::string BoundsText(const double b[6])
+{
+  auto n = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return std::string(text);
+  };
+  return "x [" + n(b[0]) + ", " + n(b[1]) + "]  y [" + n(b[2]) + ", " + n(b[3]) + "]  z [" +
+    n(b[4]) + ", " + n(b[5]) + "]";
+}
+
+/// `--describe`: what a user needs to place cameras and check an import, on stdout.
+void Describe(const RenderKeys::Keys& keys, const std::vector<Prop>& props, bool demo,
+  const std::string& cameraNote, double tmin, double tmax, double cameraMin, double cameraMax,
+  bool fixedClipping)
+{
+  double all[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  int visible = 0;
+  for (const auto& p : props)
+  {
+    if (p.Actor->GetVisibility())
+    {
+      const double* b = p.Actor->GetBounds();
+      for (int c = 0; c < 3; ++c)
+      {
+        all[2 * c] = std::min(all[2 * c], b[2 * c]);
+        all[2 * c + 1] = std::max(all[2 * c + 1], b[2 * c + 1]);
+      }
+      ++visible;
+    }
+  }
+  std::printf("lct-render: %s\n", keys.Source.c_str());
+  std::printf("scene: %zu objects (%d visible)%s\n", props.size(), visible,
+    demo ? ", with the demo scene" : "");
+  if (visible > 0)
+  {
+    const double diagonal = std::sqrt(
+      vtkMath::Distance2BetweenPoints(std::array<double, 3>{ all[0], all[2], all[4] }.data(),
+        std::array<double, 3>{ all[1], all[3], all[5] }.data()));
+    std::printf("  bounds of the visible objects at rest: %s, centre (%s, %s, %s), diagonal %s\n",
+      BoundsText(all).c_str(), Num(0.5 * (all[0] + all[1])).c_str(),
+      Num(0.5 * (all[2] + all[3])).c_str(), Num(0.5 * (all[4] + all[5])).c_str(),
+      Num(diagonal).c_str());
+  }
+  for (const auto& p : props)
+  {
+    auto* data = vtkPolyData::SafeDownCast(p.Actor->GetMapper()->GetInput());
+    std::printf("  %s: %s, %s, %lld points, %lld cells%s%s, from %s\n",
+      RenderKeys::Printable(p.Name).c_str(), BoundsText(p.Actor->GetBounds()).c_str(),
+      p.Actor->GetVisibility() ? "visible" : "hidden",
+      static_cast<long long>(data ? data->GetNumberOfPoints() : 0),
+      static_cast<long long>(data ? data->GetNumberOfCells() : 0), data ? ", arrays: " : "",
+      data ? ArrayNames(data).c_str() : "", p.Origin.c_str());
+  }
+  std::printf("time: frames span t = %s..%s, camera keys t = %s..%s (%zu keys)", Num(tmin).c_str(),
+    Num(tmax).c_str(), Num(cameraMin).c_str(), Num(cameraMax).c_str(), keys.Camera.size());
+  for (const auto& p : props)
+  {
+    if (p.Path)
+    {
+      std::printf(", props.%s t = %s..%s (%d keys)", RenderKeys::Printable(p.Name).c_str(),
+        Num(p.Path->GetMinimumT()).c_str(), Num(p.Path->GetMaximumT()).c_str(),
+        p.Path->GetNumberOfTransforms());
+    }
+  }
+  std::printf(" (each track holds its first and last key outside its own range)\n");
+  std::printf("camera keys (%s%s, clipping range %s):\n",
+    cameraNote.empty() ? keys.Source.c_str() : cameraNote.c_str(),
+    (", " + keys.Interpolation).c_str(),
+    fixedClipping ? "interpolated from the keys" : "reset from the scene's bounds per frame");
+  auto v3 = [](const double* v) {
+    return "(" + Num(v[0]) + ", " + Num(v[1]) + ", " + Num(v[2]) + ")";
+  };
+  for (const auto& k : keys.Camera)
+  {
+    vtkCamera* c = k.Camera;
+    std::printf("  t = %s: position %s, focal point %s, view up %s, %s\n", Num(k.Time).c_str(),
+      v3(c->GetPosition()).c_str(), v3(c->GetFocalPoint()).c_str(), v3(c->GetViewUp()).c_str(),
+      c->GetParallelProjection() ? ("parallel scale " + Num(c->GetParallelScale())).c_str()
+                                 : ("view angle " + Num(c->GetViewAngle())).c_str());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The manifest: the run a folder's frames belong to
+
+/// FNV-1a (64 bits) of a file's bytes, read in blocks; "" (with `why`) if it cannot be read.
+std::string Fnv1a(const std::string& file, std::uintmax_t& bytes, std::string& why)
+{
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+  {
+    why = std::strerror(errno);
+    return "";
+  }
+  std::uint64_t h = 14695981039346656037ull;
+  std::vector<char> block(1 << 16);
+  bytes = 0;
+  while (in)
+  {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const std::streamsize n = in.gcount();
+    for (std::streamsize i = 0; i < n; ++i)
+    {
+      h = (h ^ static_cast<unsigned char>(block[i])) * 1099511628211ull;
+    }
+    bytes += static_cast<std::uintmax_t>(n);
+  }
+  if (in.bad())
+  {
+    why = "read error";
+    return "";
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+constexpr const char* ManifestName = "manifest.json";
+
+/// What makes the frames of a run: two runs with equal manifests render equal frames, so their
+/// slices add up.
+nlohmann::json RunManifest(
+  const Options& opt, int width, int height, bool demo, const std::vector<std::string>& inputs)
+{
+  nlohmann::json files = nlohmann::json::array();
+  for (const auto& file : inputs)
+  {
+    std::uintmax_t bytes = 0;
+    std::string why;
+    const std::string hash = Fnv1a(file, bytes, why);
+    if (hash.empty())
+    {
+      throw InputError(file + ": cannot read it to record it in the manifest: " + why);
+    }
+    files.push_back({ { "file", fs::absolute(file).lexically_normal().string() },
+      { "bytes", bytes }, { "fnv1a64", hash } });
+  }
+  return { { "lct-render manifest", 1 }, { "frames", opt.Frames }, { "size", { width, height } },
+    { "fps", opt.Fps },
+    { "interpolation", opt.Interpolation.empty() ? "as in the keys" : opt.Interpolation },
+    { "compare", opt.Compare }, { "demo_scene", demo }, { "inputs", files } };
+}
+
+/// The differences between two manifests, for the message that refuses a run.
+std::string ManifestDifferences(const nlohmann::json& here, const nlohmann::json& there)
+{
+  std::string out;
+  for (auto it = here.begin(); it != here.end(); ++it)
+  {
+    if (!there.is_object() || !there.contains(it.key()) || there.at(it.key()) != it.value())
+    {
+      const std::string old = there.is_object() && there.contains(it.key())
+        ? there.at(it.key()).dump()
+        : std::string("(none)");
+      out += std::string(out.empty() ? "" : "; ") + it.key() + " " +
+        (it.key() == "inputs" ? "differ"
+                              : RenderKeys::Printable(old) + " there, " +
+              RenderKeys::Printable(it.value().dump()) + " here");
+    }
+  }
+  return out;
+}
+
+/// Holds an flock on a directory while it exists, so that slices started at the same time check
+/// and write the manifest one after the other.
+class DirectoryLock
+{
+public:
+  explicit DirectoryLock(const fs::path& dir)
+    : Fd(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC))
+  {
+    while (this->Fd >= 0 && ::flock(this->Fd, LOCK_EX) != 0 && errno == EINTR)
+    {
+    }
+  }
+  ~DirectoryLock()
+  {
+    if (this->Fd >= 0)
+    {
+      ::close(this->Fd); // releases the lock
+    }
+  }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+private:
+  int Fd;
+};
+
+/// Frames (regular files named frame_*.png) in `dir`.
+std::vector<fs::path> FramesIn(const fs::path& dir)
+{
+  std::vector<fs::path> frames;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+  {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && EndsWith(name, ".png") && it->is_regular_file(ec))
+    {
+      frames.push_back(it->path());
+    }
+  }
+  return frames;
+}
+
+/// Makes `dir` the folder of this run: a folder of the same run (its manifest equal to
+/// `manifest`) is kept, so that slices add up; one of a different run, or with frames but no
+/// manifest, is refused unless `overwrite`, which first removes its frames, video and sheet.
+/// Returns the problem, or "".
+std::string ClaimOutput(const fs::path& dir, const nlohmann::json& manifest, bool overwrite)
+{
+  DirectoryLock lock(dir);
+  const fs::path file = dir / ManifestName;
+  std::error_code ec;
+  std::string mismatch;
+  if (fs::exists(fs::symlink_status(file, ec)))
+  {
+    nlohmann::json there;
+    try
+    {
+      there = nlohmann::json::parse(RenderKeys::ReadSmallFile(file.string(), 1u << 20, "manifest"));
+    }
+    catch (const std::exception& e)
+    {
+      mismatch = std::string("its manifest cannot be read (") + e.what() + ")";
+    }
+    if (mismatch.empty())
+    {
+      if (there == manifest)
+      {
+        return "";
+      }
+      mismatch = "it holds another run (" + ManifestDifferences(manifest, there) + ")";
+    }
+  }
+  else
+  {
+    const auto frames = FramesIn(dir);
+    if (!frames.empty())
+    {
+      mismatch =
+        "it holds " + std::to_string(frames.size()) + " frame_*.png of a run without a manifest";
+    }
+  }
+  if (!mismatch.empty())
+  {
+    if (!overwrite)
+    {
+      return "output directory " + dir.string() + ": " + mismatch +
+        "; its frames would mix with this run's. Use another --out, or --overwrite to remove "
+        "them first";
+    }
+    auto stale = FramesIn(dir);
+    for (const char* name : { "video.ogv", "contact_sheet.png", ManifestName })
+    {
+      if (fs::is_regular_file(fs::symlink_status(dir / name, ec)))
+      {
+        stale.push_back(dir / name);
+      }
+    }
+    for (const auto& f : stale)
+    {
+      if (!fs::remove(f, ec) && ec)
+      {
+        return "--overwrite: cannot remove " + f.string() + ": " + ec.message();
+      }
+    }
+    std::printf("lct-render: --overwrite: removed %zu files of an earlier run from %s (%s)\n",
+      stale.size(), dir.string().c_str(), mismatch.c_str());
+  }
+  const std::string text = manifest.dump(2) + "\n";
+  return WriteFileAtomically(
+    file, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Video and contact sheet, from frames in order (a full render, or `lct-render assemble`)
+
+class Assembler
+{
+public:
+  Assembler(const fs::path& dir, int width, int height, int frames, int fps)
+    : VideoFile(dir / "video.ogv")
+    , SheetFile(dir / "contact_sheet.png")
+    , VideoTmp(VideoFile)
+    , Sheet(width, height)
+    , Errors(Video)
+  {
+    this->Video->SetInputData(this->Frame);
+    this->Video->SetFileName(this->VideoTmp.path().c_str());
+    this->Video->SetRate(fps);
+    this->Video->SetQuality(2);
+    // 16 evenly spaced frames (fewer when there are fewer than 16).
+    for (int k = 0; k < 16; ++k)
+    {
+      const int i = frames >= 16 ? static_cast<int>(std::lround(k * (frames - 1) / 15.0)) : k;
+      if (i < frames)
+      {
+        this->SheetSlot.emplace(i, k);
+      }
+    }
+  }
+
+  /// Adds frame i (frames come in order); returns the problem, or "".
+  std::string Add(int i, vtkImageData* image)
+  {
+    this->Frame->ShallowCopy(image);
+    this->Frame->Modified();
+    if (!this->Started)
+    {
+      this->Video->Start();
+      this->Started = true;
+    }
+    this->Video->Write();
+    if (this->Video->GetErrorCode() != 0)
+    {
+      return "writing " + this->VideoFile.string() + " failed: " + this->Errors.Take();
+    }
+    const auto slot = this->SheetSlot.find(i);
+    if (slot != this->SheetSlot.end())
+    {
+      this->Sheet.Add(slot->second, image);
+    }
+    return "";
+  }
+
+  /// Ends the video, checks and renames it, writes the contact sheet; returns the problem.
+  std::string Finish()
+  {
+    this->Video->End();
+    std::string why;
+    if (this->Video->GetErrorCode() != 0)
+    {
+      return "writing " + this->VideoFile.string() + " failed: " + this->Errors.Take();
+    }
+    if (!CompleteOgg(this->VideoTmp.path(), why))
+    {
+      return "writing " + this->VideoFile.string() + " failed: " + why +
+        " (disk full or a file-size limit?)";
+    }
+    why = this->VideoTmp.Commit();
+    if (!why.empty())
+    {
+      return why;
+    }
+    std::printf("lct-render: video %s\n", this->VideoFile.string().c_str());
+    why = WritePNG(this->Sheet.image(), this->SheetFile);
+    if (!why.empty())
+    {
+      return why;
+    }
+    std::printf("lct-render: contact sheet %s\n", this->SheetFile.string().c_str());
+    return "";
+  }
+
+private:
+  fs::path VideoFile, SheetFile;
+  Temporary VideoTmp;
+  ContactSheet Sheet;
+  vtkNew<vtkOggTheoraWriter> Video;
+  ErrorCatcher Errors;
+  vtkNew<vtkImageData> Frame;
+  std::map<int, int> SheetSlot;
+  bool Started = false;
+};
+
+/// `lct-render assemble DIR [--fps N]`: the video and contact sheet of a run rendered in
+/// slices, from DIR's frames and manifest.
+int Assemble(int argc, char* argv[])
+{
+  std::string dirName;
+  int fps = -1;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help")
+    {
+      std::cout << "usage: lct-render assemble DIR [--fps N]\n\nWrites DIR/video.ogv and "
+                   "DIR/contact_sheet.png from the frames of DIR's run (DIR/manifest.json),\n"
+                   "at the run's --fps unless --fps N is given. Needs every frame, no X.\n";
+      return 0;
+    }
+    if (a == "--fps")
+    {
+      if (i + 1 >= argc || !ParseInt(argv[i + 1], fps) || fps < 1 || fps > Limits::MaxFps)
+      {
+        std::cerr << "lct-render: assemble: --fps expects a frame rate N, 1 <= N <= "
+                  << Limits::MaxFps << "\n";
+        return 2;
+      }
+      ++i;
+    }
+    else if (!a.empty() && a[0] != '-' && dirName.empty())
+    {
+      dirName = a;
+    }
+    else
+    {
+      std::cerr << "lct-render: assemble: unexpected argument " << RenderKeys::Printable(a)
+                << "\nusage: lct-render assemble DIR [--fps N]\n";
+      return 2;
+    }
+  }
+  if (dirName.empty())
+  {
+    std::cerr << "lct-render: assemble needs the output directory of a run\nusage: lct-render "
+                 "assemble DIR [--fps N]\n";
+    return 2;
+  }
+  const fs::path dir = dirName;
+  int frames = 0, width = 0, height = 0;
+  try
+  {
+    const std::string file = (dir / ManifestName).string();
+    nlohmann::json m;
+    try
+    {
+      m = nlohmann::json::parse(RenderKeys::ReadSmallFile(file, 1u << 20, "manifest"));
+    }
+    catch (const nlohmann::json::exception& e)
+    {
+      throw InputError(file + ": not a manifest of lct-render: " + e.what());
+    }
+    auto number = [&](const nlohmann::json& v, int lo, int hi, const char* what) {
+      if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+      {
+        throw InputError(file + ": " + what + " must be a whole number in [" + std::to_string(lo) +
+          ", " + std::to_string(hi) + "]");
+      }
+      return v.get<int>();
+    };
+    if (!m.is_object() || !m.contains("frames") || !m.contains("size") || !m.contains("fps") ||
+      !m.at("size").is_array() || m.at("size").size() != 2)
+    {
+      throw InputError(file + ": not a manifest of lct-render (frames, size and fps expected)");
+    }
+    frames = number(m.at("frames"), 1, Limits::MaxFrames, "frames");
+    width = number(m.at("size")[0], Limits::MinSide, Limits::MaxSide, "size[0]");
+    height = number(m.at("size")[1], Limits::MinSide, Limits::MaxSide, "size[1]");
+    if (fps < 0)
+    {
+      fps = number(m.at("fps"), 1, Limits::MaxFps, "fps");
+    }
+  }
+  catch (const InputError& e)
+  {
+    std::cerr << "lct-render: assemble: " << e.what()
+              << (fs::exists(dir / ManifestName) ? ""
+                                                 : " (assemble needs the --out folder of a run)")
+              << "\n";
+    return 1;
+  }
+  // Every frame first: a missing one is named before anything is written.
+  std::vector<int> missing;
+  for (int i = 0; i < frames; ++i)
+  {
+    std::error_code ec;
+    if (!fs::is_regular_file(dir / FrameName(i), ec))
+    {
+      missing.push_back(i);
+    }
+  }
+  if (!missing.empty())
+  {
+    std::string list;
+    for (size_t k = 0; k < missing.size() && k < 8; ++k)
+    {
+      list += (k ? ", " : "") + FrameName(missing[k]);
+    }
+    std::cerr << "lct-render: assemble: " << dir.string() << " lacks " << missing.size() << " of "
+              << frames << " frames (" << list << (missing.size() > 8 ? ", ..." : "")
+              << "): render the missing slices first (e.g. --frames " << missing.front() << ":"
+              << missing.back() + 1 << "/" << frames << ")\n";
+    return 1;
+  }
+  Assembler out(dir, width, height, frames, fps);
+  for (int i = 0; i < frames; ++i)
+  {
+    const fs::path name = dir / FrameName(i);
+    vtkNew<vtkPNGReader> reader;
+    ErrorCatcher errors(reader);
+    std::string why;
+    if (!reader->CanReadFile(name.c_str()))
+    {
+      why = name.string() + " is not a PNG file";
+    }
+    else
+    {
+      reader->SetFileName(name.c_str());
+      reader->Update();
+      vtkImageData* image = reader->GetOutput();
+      int dims[3];
+      image->GetDimensions(dims);
+      if (reader->GetErrorCode() != 0 || !image->GetScalarPointer())
+      {
+        why = "reading " + name.string() + " failed: " + errors.Take();
+      }
+      else if (dims[0] != width || dims[1] != height || image->GetNumberOfScalarComponents() != 3 ||
+        image->GetScalarType() != VTK_UNSIGNED_CHAR)
+      {
+        why = name.string() + " is a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+          " image of " + std::to_string(image->GetNumberOfScalarComponents()) +
+          " components; the run's frames are " + std::to_string(width) + "x" +
+          std::to_string(height) + " RGB";
+      }
+      else
+      {
+        why = out.Add(i, image);
+      }
+    }
+    if (!why.empty())
+    {
+      std::cerr << "lct-render: assemble: " << why << "\n";
+      RemoveTemporaries();
+      return 1;
+    }
+  }
+  const std::string why = out.Finish();
+  if (!why.empty())
+  {
+    std::cerr << "lct-render: assemble: " << why << "\n";
+    RemoveTemporaries();
+    return 1;
+  }
+  std::printf("lct-render: assembled %d frames of %dx%d at %d fps in %s\n", frames, width, height,
+    fps, dir.string().c_str());
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -1066,6 +2019,11 @@ int main(int argc, char* argv[])
   std::signal(SIGXFSZ, SIG_IGN);
   // Xlib ends the process with exit() when the X server goes away mid-run.
   std::atexit(RemoveTemporaries);
+
+  if (argc > 1 && std::string(argv[1]) == "assemble")
+  {
+    return Assemble(argc, argv);
+  }
 
   Options opt;
   bool help = false;
@@ -1089,15 +2047,26 @@ int main(int argc, char* argv[])
   ErrorCatcher cameraErrors(cameraPath);
   vtkNew<vtkPoints> scenePoints;
   std::string modelSource;
+  // The demo scene only when asked for, or when nothing says what to draw.
+  const bool demo = opt.DemoScene || (opt.KeysFile.empty() && opt.Meshes.empty());
+  std::vector<std::string> inputs; // every file the frames depend on, for the manifest
+  std::string cameraNote;          // where the camera keys came from, for --describe
   try
   {
-    // Meshes first: their reader runs in a forked child, best before anything else exists.
-    std::vector<vtkSmartPointer<vtkPolyData>> meshes;
-    for (const auto& mesh : opt.Meshes)
+    const bool paraViewCamera = !opt.CameraFiles.empty() || !opt.StateFile.empty();
+    if (!opt.KeysFile.empty())
     {
-      meshes.push_back(ReadMesh(mesh.second));
+      keys = RenderKeys::ReadFile(opt.KeysFile, paraViewCamera);
+      inputs.push_back(opt.KeysFile);
     }
-    keys = opt.KeysFile.empty() ? RenderKeys::BuiltIn() : RenderKeys::ReadFile(opt.KeysFile);
+    else
+    {
+      keys = RenderKeys::BuiltIn();
+      if (!demo)
+      {
+        keys.Props.clear(); // the built-in prop keys move the demo scene's cone
+      }
+    }
     if (!opt.CameraFiles.empty())
     {
       // ParaView camera files, in the order given, are the camera keys at t = 0, 1, 2, ...
@@ -1105,6 +2074,7 @@ int main(int argc, char* argv[])
       for (size_t i = 0; i < opt.CameraFiles.size(); ++i)
       {
         keys.Camera.push_back(RenderKeys::ReadPvcc(opt.CameraFiles[i], static_cast<double>(i)));
+        inputs.push_back(opt.CameraFiles[i]);
         if (keys.Camera.back().Camera->GetParallelProjection() !=
           keys.Camera.front().Camera->GetParallelProjection())
         {
@@ -1118,11 +2088,22 @@ int main(int argc, char* argv[])
         throw InputError(opt.CameraFiles[0] +
           ": a camera path needs at least 2 keys (give 2 or more .pvcc files)");
       }
-      if (opt.KeysFile.empty())
-      {
-        keys.Props.clear(); // the built-in prop keys belong to the built-in flight
-        keys.Source = opt.CameraFiles[0];
-      }
+      cameraNote = std::to_string(keys.Camera.size()) + " .pvcc files";
+    }
+    if (!opt.StateFile.empty())
+    {
+      RenderKeys::StateCamera state = RenderKeys::ReadPvsm(opt.StateFile);
+      inputs.push_back(opt.StateFile);
+      keys.Camera = state.Keys;
+      keys.Interpolation = state.Interpolation;
+      keys.ConsistentRotation = false;
+      cameraNote = opt.StateFile + ", " + state.Cue + ", AnimationScene t = " + Num(state.Start) +
+        ".." + Num(state.End);
+    }
+    if (paraViewCamera && opt.KeysFile.empty())
+    {
+      keys.Props.clear(); // the built-in prop keys belong to the built-in flight
+      keys.Source = !opt.StateFile.empty() ? opt.StateFile : opt.CameraFiles[0];
     }
     const std::string& source = keys.Source;
     if (opt.Compare && keys.Camera.size() > Limits::MaxCompareKeys)
@@ -1153,37 +2134,83 @@ int main(int argc, char* argv[])
       }
     }
 
-    // The scene: CameraFlightScene's actors, by name, plus --mesh meshes.
-    const char* const names[] = { "floor", "pedestal", "model", "sphere", "cube", "cone" };
-    const auto actors = CameraFlightScene::MakeActors(&modelSource);
-    for (size_t i = 0; i < actors.size(); ++i)
+    // Meshes: --mesh and the scene's files, each read in a forked child (ReadMesh).
+    const auto& objects = keys.View.Objects;
+    const size_t files = opt.Meshes.size() +
+      std::count_if(objects.begin(), objects.end(),
+        [](const RenderKeys::SceneObject& o) { return !o.File.empty(); });
+    if (files > static_cast<size_t>(Limits::MaxMeshes))
     {
-      Prop p;
-      p.Name = i < 6 ? names[i] : "actor" + std::to_string(i);
-      p.Actor = actors[i];
-      props.push_back(std::move(p));
+      throw InputError(source + ": " + std::to_string(files) +
+        " mesh files (scene objects and --mesh); at most " + std::to_string(Limits::MaxMeshes) +
+        " are accepted");
     }
-    const double colors[4][3] = { { 0.6, 0.3, 0.7 }, { 0.9, 0.8, 0.2 }, { 0.2, 0.7, 0.7 },
-      { 0.9, 0.5, 0.6 } };
-    for (size_t m = 0; m < opt.Meshes.size(); ++m)
-    {
-      const auto& [name, file] = opt.Meshes[m];
+    auto add = [&](const std::string& name, vtkSmartPointer<vtkActor> actor,
+                 const std::string& origin) {
       for (const auto& p : props)
       {
         if (p.Name == name)
         {
-          throw InputError("--mesh " + RenderKeys::Printable(name) + "=" + file + ": the name " +
-            RenderKeys::Printable(name) + " is already used by the scene");
+          throw InputError(origin + ": the name " + RenderKeys::Printable(name) +
+            " is already used by the " + p.Origin);
         }
       }
-      vtkNew<vtkPolyDataMapper> mapper;
-      mapper->SetInputData(meshes[m]);
       Prop p;
       p.Name = name;
-      p.Actor = vtkSmartPointer<vtkActor>::New();
-      p.Actor->SetMapper(mapper);
-      p.Actor->GetProperty()->SetColor(colors[m % 4][0], colors[m % 4][1], colors[m % 4][2]);
+      p.Actor = actor;
+      p.Origin = origin;
       props.push_back(std::move(p));
+    };
+    if (demo)
+    {
+      // The demo scene: CameraFlightScene's actors, by name.
+      const char* const names[] = { "floor", "pedestal", "model", "sphere", "cube", "cone" };
+      const auto actors = CameraFlightScene::MakeActors(&modelSource);
+      for (size_t i = 0; i < actors.size(); ++i)
+      {
+        add(i < 6 ? names[i] : "actor" + std::to_string(i), actors[i], "demo scene");
+      }
+    }
+    for (size_t i = 0; i < objects.size(); ++i)
+    {
+      const RenderKeys::SceneObject& o = objects[i];
+      const std::string where = source + ": " + o.Path;
+      vtkSmartPointer<vtkPolyData> data;
+      if (!o.File.empty())
+      {
+        try
+        {
+          data = ReadMesh(o.File);
+        }
+        catch (const InputError& e)
+        {
+          throw InputError(where + ".file: " + e.what());
+        }
+        inputs.push_back(o.File);
+      }
+      else
+      {
+        data = MakeSource(o);
+      }
+      auto actor = MakeMeshActor(data);
+      ApplyLook(o.Look, actor, data, i, where);
+      add(o.Name, actor, where);
+    }
+    for (size_t m = 0; m < opt.Meshes.size(); ++m)
+    {
+      const auto& [name, file] = opt.Meshes[m];
+      auto data = ReadMesh(file);
+      inputs.push_back(file);
+      auto actor = MakeMeshActor(data);
+      RenderKeys::Appearance look;
+      ApplyLook(look, actor, data, m, "--mesh " + RenderKeys::Printable(name));
+      add(name, actor, "--mesh " + RenderKeys::Printable(name) + "=" + file);
+    }
+    if (props.empty())
+    {
+      throw InputError(source +
+        ": nothing to draw: the keys file has no \"scene\" section (scene.objects), and "
+        "neither --mesh NAME=FILE nor --demo-scene is given");
     }
     for (auto& p : props)
     {
@@ -1194,9 +2221,9 @@ int main(int argc, char* argv[])
       {
         p.Center[c] = 0.5 * (b[2 * c] + b[2 * c + 1]);
       }
-      // The scene's points at rest, for the path metric (at most ~2000 per actor).
+      // The visible scene's points at rest, for the path metric (at most ~2000 per actor).
       auto* data = vtkPolyData::SafeDownCast(p.Actor->GetMapper()->GetInput());
-      if (data && data->GetNumberOfPoints() > 0)
+      if (p.Actor->GetVisibility() && data && data->GetNumberOfPoints() > 0)
       {
         const vtkIdType n = data->GetNumberOfPoints();
         const vtkIdType stride = std::max<vtkIdType>(1, n / 2000);
@@ -1221,7 +2248,9 @@ int main(int argc, char* argv[])
           known += (known.empty() ? "" : ", ") + RenderKeys::Printable(p.Name);
         }
         throw InputError(source + ": props." + RenderKeys::Printable(name) +
-          ": no such object in the scene (known: " + known + "; add meshes with --mesh NAME=FILE)");
+          ": no such object in the scene (known: " + known +
+          "). Add objects in scene.objects, meshes with --mesh NAME=FILE, or --demo-scene for "
+          "the demo objects");
       }
       it->Path = vtkSmartPointer<vtkTransformInterpolatorLCT>::New();
       it->Errors = std::make_unique<ErrorCatcher>(it->Path);
@@ -1256,12 +2285,32 @@ int main(int argc, char* argv[])
     return 1;
   }
 
-  const double tmin = cameraPath->GetMinimumT(), tmax = cameraPath->GetMaximumT();
+  // ---- time: the frames span every track's keys; each track is clamped to its own range.
+  const double cameraMin = cameraPath->GetMinimumT(), cameraMax = cameraPath->GetMaximumT();
+  double tmin = cameraMin, tmax = cameraMax;
+  for (const auto& p : props)
+  {
+    if (p.Path)
+    {
+      tmin = std::min(tmin, p.Path->GetMinimumT());
+      tmax = std::max(tmax, p.Path->GetMaximumT());
+    }
+  }
+  auto cameraTime = [&](double t) { return std::clamp(t, cameraMin, cameraMax); };
   const int N = opt.Frames;
   const bool full = opt.First == 0 && opt.Last == N;
   auto frameTime = [&](int i) {
     return N > 1 ? tmin + (tmax - tmin) * (static_cast<double>(i) / (N - 1)) : tmin;
   };
+  const int width = opt.SizeGiven || keys.View.Width == 0 ? opt.Width : keys.View.Width;
+  const int height = opt.SizeGiven || keys.View.Height == 0 ? opt.Height : keys.View.Height;
+  const bool fixedClipping = keys.Camera.front().ClippingRange;
+
+  if (opt.Describe)
+  {
+    Describe(keys, props, demo, cameraNote, tmin, tmax, cameraMin, cameraMax, fixedClipping);
+    return 0;
+  }
 
   // ---- every frame's camera and props, before anything is written: an interpolation that
   // fails or leaves the finite range stops the run here, with no file touched.
@@ -1287,7 +2336,7 @@ int main(int argc, char* argv[])
     {
       const double t = frameTime(i);
       std::string why;
-      if (!cameraPath->InterpolateCamera(i == nanFrame && !nanProps ? nan : t, camera))
+      if (!cameraPath->InterpolateCamera(i == nanFrame && !nanProps ? nan : cameraTime(t), camera))
       {
         why = "vtkCameraInterpolatorLCT failed: " + cameraErrors.Take();
       }
@@ -1297,7 +2346,7 @@ int main(int argc, char* argv[])
       }
       if (why.empty() && opt.Compare)
       {
-        vtkPath->InterpolateCamera(t, camera);
+        vtkPath->InterpolateCamera(cameraTime(t), camera);
         why = CheckCamera(camera);
         if (!why.empty())
         {
@@ -1330,10 +2379,21 @@ int main(int argc, char* argv[])
     return 125;
   }
 
-  // ---- output directory
+  // ---- output directory and its manifest
   const fs::path outDir = opt.Out;
   {
-    const std::string problem = CheckOutput(outDir, opt, full);
+    std::string problem = CheckOutput(outDir, opt, full);
+    if (problem.empty())
+    {
+      try
+      {
+        problem = ClaimOutput(outDir, RunManifest(opt, width, height, demo, inputs), opt.Overwrite);
+      }
+      catch (const InputError& e)
+      {
+        problem = e.what();
+      }
+    }
     if (!problem.empty())
     {
       std::cerr << "lct-render: " << problem << "\n";
@@ -1341,22 +2401,22 @@ int main(int argc, char* argv[])
     }
   }
 
-  // ---- path metric: MetricSamples cameras, whatever the number of frames
+  // ---- path metric: MetricSamples cameras over the camera's keys, whatever the frames
   {
     vtkNew<vtkCameraPathMetric> metric;
     ErrorCatcher metricErrors(metric);
     metric->SetPoints(scenePoints);
-    metric->SetAspect((opt.Compare ? 0.5 : 1.0) * opt.Width / opt.Height);
+    metric->SetAspect((opt.Compare ? 0.5 : 1.0) * width / height);
     metric->SetNumberOfSamples(MetricSamples);
     const long long points = scenePoints->GetNumberOfPoints();
-    if (metric->EvaluateInterpolator(cameraPath, tmin, tmax))
+    if (metric->EvaluateInterpolator(cameraPath, cameraMin, cameraMax))
     {
       std::printf("lct-render: metric LCT path (vtkCameraInterpolatorLCT): %.2f %% excess in "
                   "camera space, %.2f %% on screen, %d of %lld points leave the view "
                   "(%d cameras over t = %s..%s)\n",
         metric->GetCameraSpaceExcess(), metric->GetScreenSpaceExcess(),
-        metric->GetNumberOfPointsLeavingView(), points, MetricSamples, Num(tmin).c_str(),
-        Num(tmax).c_str());
+        metric->GetNumberOfPointsLeavingView(), points, MetricSamples, Num(cameraMin).c_str(),
+        Num(cameraMax).c_str());
     }
     else
     {
@@ -1368,7 +2428,8 @@ int main(int argc, char* argv[])
       for (int s = 0; s < MetricSamples; ++s)
       {
         vtkNew<vtkCamera> c;
-        vtkPath->InterpolateCamera(tmin + (tmax - tmin) * s / (MetricSamples - 1), c);
+        vtkPath->InterpolateCamera(
+          cameraMin + (cameraMax - cameraMin) * s / (MetricSamples - 1), c);
         cameras->AddItem(c);
       }
       if (metric->EvaluateCameras(cameras))
@@ -1377,8 +2438,8 @@ int main(int argc, char* argv[])
                     "camera space, %.2f %% on screen, %d of %lld points leave the view "
                     "(%d cameras over t = %s..%s)\n",
           metric->GetCameraSpaceExcess(), metric->GetScreenSpaceExcess(),
-          metric->GetNumberOfPointsLeavingView(), points, MetricSamples, Num(tmin).c_str(),
-          Num(tmax).c_str());
+          metric->GetNumberOfPointsLeavingView(), points, MetricSamples, Num(cameraMin).c_str(),
+          Num(cameraMax).c_str());
       }
       else
       {
@@ -1390,24 +2451,54 @@ int main(int argc, char* argv[])
   }
 
   // ---- render window
+  const RenderKeys::Scene& view = keys.View;
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   // Multisample buffers cost 8 bytes per sample: at most 2^25 samples (256 MiB).
-  const long long pixels = static_cast<long long>(opt.Width) * opt.Height;
-  int samples = 8;
+  const long long pixels = static_cast<long long>(width) * height;
+  int samples = view.AntiAliasing == "msaa" ? 8 : 0;
   while (samples > 0 && samples * pixels > (1LL << 25))
   {
     samples /= 2;
   }
   window->SetMultiSamples(samples < 2 ? 0 : samples);
-  window->SetSize(opt.Width, opt.Height);
+  window->SetSize(width, height);
   std::vector<vtkSmartPointer<vtkRenderer>> renderers;
   for (int side = 0; side < (opt.Compare ? 2 : 1); ++side)
   {
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetViewport(
       opt.Compare ? 0.5 * side : 0.0, 0.0, opt.Compare ? 0.5 * (side + 1) : 1.0, 1.0);
-    renderer->SetBackground(0.96, 0.95, 0.92);
+    renderer->SetBackground(view.Background[0], view.Background[1], view.Background[2]);
+    if (view.Gradient)
+    {
+      renderer->GradientBackgroundOn();
+      renderer->SetBackground2(view.BackgroundTop[0], view.BackgroundTop[1], view.BackgroundTop[2]);
+    }
+    renderer->SetUseFXAA(view.AntiAliasing == "fxaa");
+    // Without a scene section: VTK's headlight, as the demo scene has always been lit.
+    if (view.Given && view.Lights == "kit")
+    {
+      vtkNew<vtkLightKit> kit;
+      kit->AddLightsToRenderer(renderer);
+    }
+    for (const auto& l : view.LightList)
+    {
+      vtkNew<vtkLight> light;
+      if (l.Camera)
+      {
+        light->SetLightTypeToCameraLight();
+      }
+      else
+      {
+        light->SetLightTypeToSceneLight();
+      }
+      light->SetPosition(l.Position);
+      light->SetFocalPoint(l.FocalPoint);
+      light->SetColor(l.Color[0], l.Color[1], l.Color[2]);
+      light->SetIntensity(l.Intensity);
+      renderer->AddLight(light);
+    }
     for (const auto& p : props)
     {
       renderer->AddActor(p.Actor);
@@ -1416,7 +2507,7 @@ int main(int argc, char* argv[])
     {
       vtkNew<vtkTextActor> label;
       label->SetInput(side == 0 ? "LCT: vtkCameraInterpolatorLCT" : "VTK: vtkCameraInterpolator");
-      label->GetTextProperty()->SetFontSize(std::max(10, opt.Height / 20));
+      label->GetTextProperty()->SetFontSize(std::max(10, height / 20));
       label->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
       label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
       label->GetPositionCoordinate()->SetValue(0.015, 0.025);
@@ -1430,46 +2521,22 @@ int main(int argc, char* argv[])
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
 
-  vtkNew<vtkOggTheoraWriter> video;
-  ErrorCatcher videoErrors(video);
-  const fs::path videoFile = outDir / "video.ogv";
-  std::unique_ptr<Temporary> videoTmp;
-  std::unique_ptr<ContactSheet> sheet;
+  std::unique_ptr<Assembler> assembler;
   if (full)
   {
-    videoTmp = std::make_unique<Temporary>(videoFile);
-    video->SetInputConnection(grab->GetOutputPort());
-    video->SetFileName(videoTmp->path().c_str());
-    video->SetRate(24);
-    video->SetQuality(2);
-    sheet = std::make_unique<ContactSheet>(opt.Width, opt.Height);
+    assembler = std::make_unique<Assembler>(outDir, width, height, N, opt.Fps);
   }
   auto fail = [&](const std::string& why) {
     std::cerr << "lct-render: " << why << "\n";
-    if (videoTmp)
-    {
-      videoTmp->Discard();
-    }
+    assembler.reset();
     RemoveTemporaries();
     return 1;
   };
-
-  // Contact-sheet frames: 16 evenly spaced frames (fewer when N < 16).
-  std::map<int, int> sheetSlot;
-  for (int k = 0; k < 16 && full; ++k)
-  {
-    const int i = N >= 16 ? static_cast<int>(std::lround(k * (N - 1) / 15.0)) : k;
-    if (i < N)
-    {
-      sheetSlot.emplace(i, k);
-    }
-  }
 
   const bool tty = isatty(STDOUT_FILENO);
   const int count = opt.Last - opt.First;
   const auto start = std::chrono::steady_clock::now();
   int lastDecile = 0;
-  bool videoStarted = false;
   for (int i = opt.First; i < opt.Last; ++i)
   {
     const double t = frameTime(i);
@@ -1481,17 +2548,20 @@ int main(int argc, char* argv[])
         return fail("props." + RenderKeys::Printable(p.Name) + " at t = " + Num(t) + ": " + why);
       }
     }
-    if (!cameraPath->InterpolateCamera(t, renderers[0]->GetActiveCamera()))
+    if (!cameraPath->InterpolateCamera(cameraTime(t), renderers[0]->GetActiveCamera()))
     {
       return fail("interpolating the camera at t = " + Num(t) + " failed: " + cameraErrors.Take());
     }
     if (opt.Compare)
     {
-      vtkPath->InterpolateCamera(t, renderers[1]->GetActiveCamera());
+      vtkPath->InterpolateCamera(cameraTime(t), renderers[1]->GetActiveCamera());
     }
-    for (auto& r : renderers)
+    if (!fixedClipping)
     {
-      r->ResetCameraClippingRange();
+      for (auto& r : renderers)
+      {
+        r->ResetCameraClippingRange();
+      }
     }
     window->Render();
     grab->Modified();
@@ -1499,47 +2569,32 @@ int main(int argc, char* argv[])
     vtkImageData* image = grab->GetOutput();
     int dims[3];
     image->GetDimensions(dims);
-    if (dims[0] != opt.Width || dims[1] != opt.Height || !image->GetScalarPointer())
+    if (dims[0] != width || dims[1] != height || !image->GetScalarPointer())
     {
-      return fail("rendering frame " + std::to_string(i) + " at " + std::to_string(opt.Width) +
-        "x" + std::to_string(opt.Height) + " failed: the window gave a " + std::to_string(dims[0]) +
-        "x" + std::to_string(dims[1]) + " image (is the size beyond what the X server renders?)");
+      return fail("rendering frame " + std::to_string(i) + " at " + std::to_string(width) + "x" +
+        std::to_string(height) + " failed: the window gave a " + std::to_string(dims[0]) + "x" +
+        std::to_string(dims[1]) + " image (is the size beyond what the X server renders?)");
     }
 
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.png", i);
-    why = WritePNG(image, outDir / name);
+    why = WritePNG(image, outDir / FrameName(i));
+    if (why.empty() && assembler)
+    {
+      why = assembler->Add(i, image);
+    }
     if (!why.empty())
     {
       return fail(why);
-    }
-    if (full)
-    {
-      if (!videoStarted)
-      {
-        video->Start();
-        videoStarted = true;
-      }
-      video->Write();
-      if (video->GetErrorCode() != 0)
-      {
-        return fail("writing " + videoFile.string() + " failed: " + videoErrors.Take());
-      }
-      const auto slot = sheetSlot.find(i);
-      if (slot != sheetSlot.end())
-      {
-        sheet->Add(slot->second, image);
-      }
     }
 
     const int done = i - opt.First + 1;
     const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double fps = elapsed > 0.0 ? done / elapsed : 0.0;
+    const double eta = fps > 0.0 ? (count - done) / fps : 0.0;
     if (tty)
     {
       std::printf("\r%s %d/%d frames, %.1f fps, ETA %.0f s   ", Bar(done, count).c_str(), done,
-        count, fps, fps > 0.0 ? (count - done) / fps : 0.0);
+        count, fps, eta);
       if (done == count)
       {
         std::printf("\n");
@@ -1549,7 +2604,7 @@ int main(int argc, char* argv[])
     else if (static_cast<long long>(done) * 10 / count > lastDecile)
     {
       lastDecile = static_cast<int>(static_cast<long long>(done) * 10 / count);
-      std::printf("rendered %d/%d frames\n", done, count);
+      std::printf("rendered %d/%d frames, %.1f fps, ETA %.0f s\n", done, count, fps, eta);
       std::fflush(stdout);
     }
   }
@@ -1558,34 +2613,21 @@ int main(int argc, char* argv[])
 
   std::printf(
     "lct-render: %d frames (%d..%d of %d) at %dx%d in %.2f s (%.1f fps) -> %s/frame_NNNN.png\n",
-    count, opt.First, opt.Last - 1, N, opt.Width, opt.Height, elapsed,
-    elapsed > 0 ? count / elapsed : 0.0, outDir.string().c_str());
+    count, opt.First, opt.Last - 1, N, width, height, elapsed, elapsed > 0 ? count / elapsed : 0.0,
+    outDir.string().c_str());
   if (full)
   {
-    video->End();
-    std::string why;
-    if (video->GetErrorCode() != 0)
-    {
-      return fail("writing " + videoFile.string() + " failed: " + videoErrors.Take());
-    }
-    if (!CompleteOgg(videoTmp->path(), why))
-    {
-      return fail(
-        "writing " + videoFile.string() + " failed: " + why + " (disk full or a file-size limit?)");
-    }
-    why = videoTmp->Commit();
+    const std::string why = assembler->Finish();
     if (!why.empty())
     {
       return fail(why);
     }
-    std::printf("lct-render: video %s\n", videoFile.string().c_str());
-    const fs::path sheetFile = outDir / "contact_sheet.png";
-    why = WritePNG(sheet->image(), sheetFile);
-    if (!why.empty())
-    {
-      return fail(why);
-    }
-    std::printf("lct-render: contact sheet %s\n", sheetFile.string().c_str());
+  }
+  else if (FramesIn(outDir).size() == static_cast<size_t>(N))
+  {
+    std::printf("lct-render: %s holds all %d frames of the run: `lct-render assemble %s` makes "
+                "the video and the contact sheet\n",
+      outDir.string().c_str(), N, outDir.string().c_str());
   }
   return 0;
 }

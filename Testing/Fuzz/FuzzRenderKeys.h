@@ -27,16 +27,21 @@
 #include "vtkSmartPointer.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <streambuf>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace lct_fuzz
 {
 
-/// RenderKeys' parser warns on std::cerr about unknown keys; keep that out of the fuzzer's log.
+/// RenderKeys' readers may print notes on std::cerr (a .pvsm camera track's mode); keep them
+/// out of the fuzzer's log.
 inline void SilenceStdErr()
 {
   struct NullBuffer : std::streambuf
@@ -46,6 +51,33 @@ inline void SilenceStdErr()
   static NullBuffer null;
   static std::streambuf* const previous = std::cerr.rdbuf(&null);
   (void)previous;
+}
+
+/// The readers of ParaView files take a file name: the input's bytes in a temporary file (one
+/// per process, `stem` naming it, removed at exit), whose name is returned.
+inline const std::string& InputAsFile(const char* stem, const uint8_t* data, size_t size)
+{
+  static const std::string name = [stem] {
+    const char* dir = std::getenv("TMPDIR");
+    std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/" + stem + "-XXXXXX";
+    const int fd = mkstemp(&pattern[0]);
+    if (fd < 0)
+    {
+      std::perror("mkstemp");
+      std::abort();
+    }
+    close(fd);
+    static const std::string removeAtExit = pattern;
+    std::atexit([] { std::remove(removeAtExit.c_str()); });
+    return pattern;
+  }();
+  FILE* f = std::fopen(name.c_str(), "wb");
+  if (!f || std::fwrite(data, 1, size, f) != size || std::fclose(f) != 0)
+  {
+    std::perror(name.c_str());
+    std::abort();
+  }
+  return name;
 }
 
 /// lct-render's name -> interpolation type (its CameraType()).

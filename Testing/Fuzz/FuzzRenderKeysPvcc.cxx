@@ -10,46 +10,14 @@
 #include "FuzzInput.h"
 #include "FuzzRenderKeys.h"
 
-#include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <string>
-#include <unistd.h>
-
-namespace
-{
-/// One temporary file per process, removed at exit.
-const std::string& TemporaryFile()
-{
-  static const std::string name = [] {
-    const char* dir = std::getenv("TMPDIR");
-    std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/lct-fuzz-pvcc-XXXXXX";
-    const int fd = mkstemp(&pattern[0]);
-    if (fd < 0)
-    {
-      std::perror("mkstemp");
-      std::abort();
-    }
-    close(fd);
-    static const std::string removeAtExit = pattern;
-    std::atexit([] { std::remove(removeAtExit.c_str()); });
-    return pattern;
-  }();
-  return name;
-}
-} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   lct_fuzz::QuietOutputWindow::Install();
   lct_fuzz::SilenceStdErr();
-  const std::string& file = TemporaryFile();
-  FILE* f = std::fopen(file.c_str(), "wb");
-  if (!f || std::fwrite(data, 1, size, f) != size || std::fclose(f) != 0)
-  {
-    std::perror(file.c_str());
-    std::abort();
-  }
+  const std::string& file = lct_fuzz::InputAsFile("lct-fuzz-pvcc", data, size);
   RenderKeys::Keys keys;
   keys.Source = file;
   try

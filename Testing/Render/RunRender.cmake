@@ -1,5 +1,6 @@
 # Driver for the Render.* tests of lct-render (cmake -P). Variables:
-#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error | metric
+#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error | metric |
+#               stdout | compare | image | stale | assemble (described where they are run)
 #   LCT_OUT     scratch directory        LCT_ARGS  extra arguments, separated by |
 #   LCT_EXPECT  (error, metric) phrase stderr (error) or stdout (metric) must contain
 #   LCT_EXIT    (error) the exit code expected, default 1 (2 for usage errors)
@@ -35,6 +36,16 @@ function(lct_run out_dir)
   set(lct_skipped FALSE PARENT_SCOPE)
 endfunction()
 
+# A fresh LCT_OUT, then lct_run(dir ...); ends the script (a macro's return() is the caller's)
+# when lct-render has no display.
+macro(lct_first_run dir)
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  lct_run("${dir}" ${ARGN})
+  if (lct_skipped)
+    return()
+  endif ()
+endmacro()
+
 function(lct_expect_full dir frames)
   math(EXPR last "${frames} - 1")
   foreach (i RANGE ${last})
@@ -68,6 +79,9 @@ endfunction()
 if (LCT_MODE STREQUAL "error")
   file(REMOVE_RECURSE "${LCT_OUT}")
   set(command "${LCT_RENDER}" --out "${LCT_OUT}")
+  if (LCT_ARGS MATCHES "^assemble")
+    set(command "${LCT_RENDER}") # a subcommand takes no --out
+  endif ()
   if (LCT_SETUP STREQUAL "dir-in-the-way")
     file(MAKE_DIRECTORY "${LCT_OUT}/frame_0000.png")
   elseif (LCT_SETUP STREQUAL "out-is-file")
@@ -135,15 +149,246 @@ endif ()
 if (LCT_MODE STREQUAL "metric")
   # A slice of a run of very many frames: the metric samples a fixed number of cameras, so this
   # takes the time of one frame (the test's TIMEOUT holds it to that).
-  file(REMOVE_RECURSE "${LCT_OUT}")
-  lct_run("${LCT_OUT}" ${LCT_ARGS})
-  if (lct_skipped)
-    return()
-  endif ()
+  lct_first_run("${LCT_OUT}" ${LCT_ARGS})
   string(FIND "${out}" "${LCT_EXPECT}" at)
   if (at EQUAL -1)
     message(FATAL_ERROR "stdout does not contain \"${LCT_EXPECT}\"")
   endif ()
+  return()
+endif ()
+
+# The frame rate in the Theora identification header of an .ogv (FRN/FRD after "\x80theora",
+# its version, frame and picture sizes and offsets: 22 bytes in), as "FRN/FRD".
+function(lct_ogv_rate file out_var)
+  file(READ "${file}" hex HEX LIMIT 4096)
+  string(FIND "${hex}" "807468656f7261" at)
+  if (at EQUAL -1)
+    message(FATAL_ERROR "${file}: no Theora identification header")
+  endif ()
+  math(EXPR at "${at} + 44")
+  string(SUBSTRING "${hex}" ${at} 8 frn)
+  math(EXPR at "${at} + 8")
+  string(SUBSTRING "${hex}" ${at} 8 frd)
+  math(EXPR frn "0x${frn}")
+  math(EXPR frd "0x${frd}")
+  set(${out_var} "${frn}/${frd}" PARENT_SCOPE)
+endfunction()
+
+function(lct_contains text phrase what)
+  string(FIND "${text}" "${phrase}" at)
+  if (at EQUAL -1)
+    message(FATAL_ERROR "${what} does not contain \"${phrase}\"")
+  endif ()
+endfunction()
+
+# Every phrase of LCT_EXPECT (separated by #) in `text`.
+function(lct_expect_phrases text what)
+  string(REPLACE "#" ";" phrases "${LCT_EXPECT}")
+  foreach (phrase IN LISTS phrases)
+    lct_contains("${text}" "${phrase}" "${what}")
+  endforeach ()
+endfunction()
+
+function(lct_same_files a b out_var)
+  execute_process(
+    COMMAND "${CMAKE_COMMAND}" -E compare_files "${a}" "${b}" RESULT_VARIABLE differ)
+  if (differ)
+    set(${out_var} FALSE PARENT_SCOPE)
+  else ()
+    set(${out_var} TRUE PARENT_SCOPE)
+  endif ()
+endfunction()
+
+if (LCT_MODE STREQUAL "stdout")
+  # lct-render LCT_ARGS (no display needed, e.g. --describe): exit 0, every phrase of LCT_EXPECT
+  # on stdout, and nothing written (not even the --out directory).
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  execute_process(
+    COMMAND "${LCT_RENDER}" --out "${LCT_OUT}" ${LCT_ARGS}
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "exit ${rc}\n${out}${err}")
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "lct-render ${LCT_ARGS} exited with ${rc}")
+  endif ()
+  lct_expect_phrases("${out}" stdout)
+  if (EXISTS "${LCT_OUT}")
+    message(FATAL_ERROR "lct-render ${LCT_ARGS} created ${LCT_OUT}")
+  endif ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "help-example")
+  # The complete keys file of `lct-render --help` (from "a complete keys file" to the first
+  # empty line), with LCT_PART as its part.vtu: read by --describe, every phrase of LCT_EXPECT.
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  execute_process(COMMAND "${LCT_RENDER}" --help OUTPUT_VARIABLE help RESULT_VARIABLE rc)
+  string(FIND "${help}" "a complete keys file" at)
+  if (NOT rc EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "lct-render --help (exit ${rc}) shows no complete keys file")
+  endif ()
+  string(SUBSTRING "${help}" ${at} -1 help)
+  string(FIND "${help}" "\n  {" begin)
+  string(FIND "${help}" "\n\n" end)
+  math(EXPR length "${end} - ${begin}")
+  string(SUBSTRING "${help}" ${begin} ${length} example)
+  file(WRITE "${LCT_OUT}/keys.json" "${example}\n")
+  file(COPY_FILE "${LCT_PART}" "${LCT_OUT}/part.vtu")
+  execute_process(
+    COMMAND "${LCT_RENDER}" --describe "${LCT_OUT}/keys.json"
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "the example of --help:\n${example}\n--describe: exit ${rc}\n${out}${err}")
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "the example of lct-render --help does not read: ${err}")
+  endif ()
+  lct_expect_phrases("${out}" "--describe of the example")
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "compare")
+  # Two runs, LCT_ARGS into LCT_OUT/a and LCT_ARGS2 into LCT_OUT/b (LCT_ARGS2 unset: one run),
+  # then each pair X=Y of LCT_PAIRS (separated by #, paths below LCT_OUT) must be byte-equal
+  # (LCT_SAME TRUE) or differ (FALSE). LCT_EXPECT (optional): phrases of the first run's stdout.
+  lct_first_run("${LCT_OUT}/a" ${LCT_ARGS})
+  if (DEFINED LCT_EXPECT)
+    lct_expect_phrases("${out}" stdout)
+  endif ()
+  if (DEFINED LCT_ARGS2)
+    string(REPLACE "|" ";" LCT_ARGS2 "${LCT_ARGS2}")
+    lct_run("${LCT_OUT}/b" ${LCT_ARGS2})
+  endif ()
+  string(REPLACE "#" ";" pairs "${LCT_PAIRS}")
+  foreach (pair IN LISTS pairs)
+    string(REPLACE "=" ";" pair "${pair}")
+    list(GET pair 0 x)
+    list(GET pair 1 y)
+    foreach (f IN ITEMS "${x}" "${y}")
+      if (NOT EXISTS "${LCT_OUT}/${f}")
+        message(FATAL_ERROR "missing ${LCT_OUT}/${f}")
+      endif ()
+    endforeach ()
+    lct_same_files("${LCT_OUT}/${x}" "${LCT_OUT}/${y}" same)
+    if (NOT same STREQUAL LCT_SAME)
+      message(FATAL_ERROR "${x} and ${y}: byte-equal ${same}, expected ${LCT_SAME}")
+    endif ()
+    message(STATUS "${x} and ${y}: byte-equal ${same}, as expected")
+  endforeach ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "image")
+  # lct-render LCT_ARGS, then its frame LCT_FRAME against the baseline LCT_BASELINE with
+  # VTK's regression-image comparison (LCT_COMPARE_IMAGE, Testing/Render/CompareImage.cxx).
+  lct_first_run("${LCT_OUT}" ${LCT_ARGS})
+  execute_process(
+    COMMAND "${LCT_COMPARE_IMAGE}" "${LCT_OUT}/${LCT_FRAME}" "${LCT_BASELINE}" "${LCT_OUT}"
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "${out}${err}")
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "${LCT_OUT}/${LCT_FRAME} does not match ${LCT_BASELINE} (see ${LCT_OUT})")
+  endif ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "stale")
+  # A folder of one run (64x64, 4 frames) refuses a run of another size with a message and
+  # leaves its frames; frames without a manifest are refused too; --overwrite replaces them.
+  lct_first_run("${LCT_OUT}" --frames 4 --size 64x64 ${LCT_ARGS})
+  file(SHA256 "${LCT_OUT}/frame_0000.png" before)
+  foreach (attempt IN ITEMS manifest no-manifest)
+    if (attempt STREQUAL "no-manifest")
+      file(REMOVE "${LCT_OUT}/manifest.json")
+    endif ()
+    execute_process(
+      COMMAND "${LCT_RENDER}" --out "${LCT_OUT}" --frames 4 --size 80x48 ${LCT_ARGS}
+      RESULT_VARIABLE rc
+      ERROR_VARIABLE  err)
+    message(STATUS "${attempt}: exit ${rc}, stderr: ${err}")
+    if (NOT rc EQUAL 1)
+      message(FATAL_ERROR "a run of another size into the folder exited with ${rc}, expected 1")
+    endif ()
+    if (attempt STREQUAL "manifest")
+      set(phrase "it holds another run (size [64,64] there, [80,48] here)")
+    else ()
+      set(phrase "it holds 4 frame_*.png of a run without a manifest")
+    endif ()
+    lct_contains("${err}" "${phrase}" stderr)
+    lct_contains("${err}" "Use another --out, or --overwrite to remove them first" stderr)
+    file(SHA256 "${LCT_OUT}/frame_0000.png" after)
+    file(GLOB frames "${LCT_OUT}/frame_*.png")
+    list(LENGTH frames n)
+    if (NOT after STREQUAL before OR NOT n EQUAL 4)
+      message(FATAL_ERROR "the refused run changed the folder's frames")
+    endif ()
+  endforeach ()
+  lct_run("${LCT_OUT}" --frames 2 --size 80x48 --overwrite ${LCT_ARGS})
+  lct_contains("${out}" "--overwrite: removed 6 files of an earlier run" "--overwrite's output")
+  lct_expect_full("${LCT_OUT}" 2)
+  # The PNG's IHDR: width and height (big-endian) at bytes 16..23.
+  file(READ "${LCT_OUT}/frame_0001.png" png HEX OFFSET 16 LIMIT 8)
+  if (NOT png STREQUAL "0000005000000030")
+    message(FATAL_ERROR "frame_0001.png is not 80x48 after --overwrite (IHDR ${png})")
+  endif ()
+  message(STATUS "a stale folder is refused, then replaced with --overwrite")
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "assemble")
+  # Two slices of one run (with --fps 12) into LCT_OUT/sliced: assemble refuses while a slice
+  # is missing (writing nothing), then makes the contact sheet equal to a full run's, and a
+  # video at the run's 12 fps, or at assemble's --fps 30.
+  lct_first_run("${LCT_OUT}/full" --frames 8 --size 160x90 --fps 12 ${LCT_ARGS})
+  lct_ogv_rate("${LCT_OUT}/full/video.ogv" rate)
+  if (NOT rate STREQUAL "12/1")
+    message(FATAL_ERROR "video.ogv of --fps 12 has the frame rate ${rate}")
+  endif ()
+  lct_contains("${out}" ", ETA " "the progress lines")
+  lct_run("${LCT_OUT}/sliced" --frames 0:4/8 --size 160x90 --fps 12 ${LCT_ARGS})
+  execute_process(
+    COMMAND "${LCT_RENDER}" assemble "${LCT_OUT}/sliced"
+    RESULT_VARIABLE rc
+    ERROR_VARIABLE  err)
+  message(STATUS "assemble with a slice missing: exit ${rc}, ${err}")
+  string(FIND "${err}" "lacks 4 of 8 frames (frame_0004.png, frame_0005.png" at)
+  if (NOT rc EQUAL 1 OR at EQUAL -1 OR EXISTS "${LCT_OUT}/sliced/video.ogv" OR
+      EXISTS "${LCT_OUT}/sliced/contact_sheet.png")
+    message(FATAL_ERROR "assemble did not refuse an incomplete run cleanly")
+  endif ()
+  lct_run("${LCT_OUT}/sliced" --frames 4:8/8 --size 160x90 --fps 12 ${LCT_ARGS})
+  lct_contains("${out}" "holds all 8 frames of the run: `lct-render assemble" "the last slice's output")
+  foreach (fps IN ITEMS "" 30)
+    if (fps)
+      set(args --fps ${fps})
+      set(expected "${fps}/1")
+    else ()
+      set(args "")
+      set(expected "12/1")
+    endif ()
+    execute_process(
+      COMMAND "${LCT_RENDER}" assemble "${LCT_OUT}/sliced" ${args}
+      RESULT_VARIABLE rc
+      OUTPUT_VARIABLE out
+      ERROR_VARIABLE  err)
+    message(STATUS "assemble ${args}: exit ${rc}\n${out}${err}")
+    if (NOT rc EQUAL 0)
+      message(FATAL_ERROR "assemble exited with ${rc}")
+    endif ()
+    lct_expect_full("${LCT_OUT}/sliced" 8)
+    lct_same_files("${LCT_OUT}/full/contact_sheet.png" "${LCT_OUT}/sliced/contact_sheet.png" same)
+    if (NOT same)
+      message(FATAL_ERROR "the assembled contact sheet differs from the full run's")
+    endif ()
+    lct_ogv_rate("${LCT_OUT}/sliced/video.ogv" rate)
+    if (NOT rate STREQUAL expected)
+      message(FATAL_ERROR "assembled video.ogv has the frame rate ${rate}, expected ${expected}")
+    endif ()
+  endforeach ()
+  message(STATUS "two slices assembled: the full run's contact sheet, a complete video")
   return()
 endif ()
 
