@@ -14,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLCTLastOutput.h"
 #include "vtkLinearTransform.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -149,7 +150,7 @@ struct vtkProbeDeformerLCT::Internals
   /// Rotation logs of the last successful execution (one per probe), for ConsistentRotation.
   std::vector<Eigen::Vector3d> History;
   /// The last valid output, handed back when an execution fails.
-  vtkSmartPointer<vtkPointSet> LastOutput;
+  vtkLCTLastOutput LastOutput;
 };
 
 vtkProbeDeformerLCT::vtkProbeDeformerLCT()
@@ -361,17 +362,7 @@ int vtkProbeDeformerLCT::RequestData(
   vtkPointSet* output = vtkPointSet::GetData(outputVector);
   Internals& in = *this->Internal;
   // On any failure: the message, and the last valid output back in place.
-  const auto fail = [&]() {
-    if (in.LastOutput)
-    {
-      output->ShallowCopy(in.LastOutput);
-    }
-    else
-    {
-      output->Initialize();
-    }
-    return 0;
-  };
+  const auto fail = [&]() { return in.LastOutput.Restore(output); };
   if (!input || !output)
   {
     vtkErrorMacro(<< "no input point set");
@@ -707,8 +698,7 @@ int vtkProbeDeformerLCT::RequestData(
   {
     in.History.clear();
   }
-  in.LastOutput.TakeReference(output->NewInstance());
-  in.LastOutput->ShallowCopy(output);
+  in.LastOutput.Remember(output);
   return 1;
 }
 

@@ -6,6 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstring>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,6 +45,33 @@ public:
     return it == this->nanoseconds.end() ? 0.0 : it->second;
   }
 };
+
+/// The main of a benchmark program that prints a table of ratios or goals after the runs:
+/// `--check` is taken out of the arguments and handed to `table`, whose value is the exit status.
+inline int runWithTable(
+  int argc, char** argv, const std::function<int(const RecordingReporter&, bool check)>& table)
+{
+  bool check = false;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--check") == 0)
+    {
+      check = true;
+    }
+    else
+    {
+      args.push_back(argv[i]);
+    }
+  }
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  RecordingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const int status = table(reporter, check);
+  benchmark::Shutdown();
+  return status;
+}
 
 } // namespace lct_bench
 
