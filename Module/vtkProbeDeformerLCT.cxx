@@ -352,7 +352,7 @@ vtkMTimeType vtkProbeDeformerLCT::GetMTime()
       }
     }
   }
-  return m;
+  return this->Internal->LastOutput.WithFailure(m);
 }
 
 int vtkProbeDeformerLCT::RequestData(

@@ -215,7 +215,7 @@ vtkMTimeType vtkShapeBlenderLCT::GetMTime()
   {
     m = std::max(m, t.Mesh->GetMTime());
   }
-  return m;
+  return this->Internal->LastOutput.WithFailure(m);
 }
 
 int vtkShapeBlenderLCT::RequestData(

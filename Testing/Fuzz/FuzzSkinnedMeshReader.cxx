@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -27,6 +28,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   lct_fuzz::QuietOutputWindow::Install();
   if (size < 1)
+  {
+    return 0;
+  }
+  // assimp 5.2's binary and compressed X parsers allocate from counts in the file without a
+  // bound (2 GB from a 2.8 kB file, found here): assimp's loaders are trusted for memory (README),
+  // so those two encodings are left out rather than reported again on every run.
+  const std::string head(reinterpret_cast<const char*>(data + 1), std::min<size_t>(size - 1, 16));
+  if (data[0] % 4 == 0 && head.size() >= 12 && head.compare(0, 4, "xof ") == 0 &&
+    (head.compare(8, 3, "bin") == 0 || head.compare(8, 3, "bzi") == 0 ||
+      head.compare(8, 3, "tzi") == 0))
   {
     return 0;
   }

@@ -775,6 +775,7 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
   vtkNew<vtkProbeDeformerLCT> none;
   none->SetInputData(pd);
   expectRefused(none, "no probes", 0);
+  expectRefused(none, "no probes", 0);
 
   ASSERT_EQ(f->GetExecutive()->Update(), 1);
   const Eigen::Vector3d good = pointOf(vtkPointSet::SafeDownCast(f->GetOutputDataObject(0)), 3);
@@ -782,6 +783,9 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
   vtkNew<vtkMatrix4x4> bad;
   bad->SetElement(0, 0, std::nan(""));
   ASSERT_EQ(f->SetProbe(1, bad, nullptr), 1);
+  expectRefused(f, "probe 1: the current matrix is invalid", 10);
+  // Updating again without a change fails again (the pipeline would otherwise count the failed
+  // execution as up to date and return 1 on the restored output).
   expectRefused(f, "probe 1: the current matrix is invalid", 10);
   bad->SetElement(0, 0, 1.0);
   bad->SetElement(3, 0, 0.5);
