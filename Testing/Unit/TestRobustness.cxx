@@ -237,24 +237,31 @@ TEST(Robustness, StepBetweenExtremeKeysIsNamed)
   EXPECT_TRUE(contains(errors->Last, "SetParametrisationToPolar")) << errors->Last;
 }
 
+/// Translation keys 0, 1.65e308, 1.65e308, 0 at t = 0 .. 3.
+static void addHugePlateau(vtkTransformInterpolatorLCT* path)
+{
+  const double x[4] = { 0.0, 1.65e308, 1.65e308, 0.0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkMatrix4x4> m;
+    m->SetElement(0, 3, x[k]);
+    ASSERT_EQ(path->AddTransform(k, m), 1);
+  }
+}
+
 TEST(Robustness, SplineOvershootThatOverflowsIsAnErrorNotInf)
 {
   for (int type : { vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
          vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION })
   {
     vtkNew<vtkTransformInterpolatorLCT> path;
+    path->MonotoneTangentsOff(); // plain Catmull-Rom overshoots (the default does not: below)
     path->SetInterpolationType(type);
     vtkNew<ErrorCounter> errors;
     path->AddObserver(vtkCommand::ErrorEvent, errors);
     // Steps of 1.65e308 are representable; the overshoot between the middle keys (12.5 % above
     // them for uniform Catmull-Rom) is not.
-    const double x[4] = { 0.0, 1.65e308, 1.65e308, 0.0 };
-    for (int k = 0; k < 4; ++k)
-    {
-      vtkNew<vtkMatrix4x4> m;
-      m->SetElement(0, 3, x[k]);
-      ASSERT_EQ(path->AddTransform(k, m), 1);
-    }
+    addHugePlateau(path);
     vtkNew<vtkMatrix4x4> out;
     int failures = 0;
     for (int i = 0; i <= 60; ++i)
@@ -273,6 +280,21 @@ TEST(Robustness, SplineOvershootThatOverflowsIsAnErrorNotInf)
     EXPECT_GT(failures, 0); // the overshoot past 1.7e308 does overflow
     EXPECT_EQ(errors->Count, failures);
     EXPECT_TRUE(contains(errors->Last, "out of the range")) << errors->Last;
+  }
+}
+
+TEST(Robustness, MonotoneSplineDoesNotOvershootIntoOverflow)
+{
+  // The keys of the test above: the default Spline's tangents stay below the secants, so the
+  // curve stays within [0, 1.65e308] and every point is finite.
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  addHugePlateau(path);
+  vtkNew<vtkMatrix4x4> out;
+  for (int i = 0; i <= 60; ++i)
+  {
+    ASSERT_EQ(path->InterpolateTransform(i / 20.0, out), 1) << i;
+    EXPECT_GE(out->GetElement(0, 3), 0.0);
+    EXPECT_LE(out->GetElement(0, 3), 1.65e308);
   }
 }
 
