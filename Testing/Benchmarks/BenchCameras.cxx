@@ -27,13 +27,13 @@ constexpr int kQueries = 1024;
 /// A random camera around the unit sphere: focal point near the origin, turned from `direction`
 /// by up to `maxTurn` radians, distance 4-8, view angle 20-50 degrees, window centre +-0.3.
 void randomCamera(lct_test::RandomTransforms& random, const Eigen::Vector3d& direction, double turn,
-  vtkCamera* camera)
+  vtkCamera* camera, double focalSpread = 0.3)
 {
   const Eigen::Vector3d axis = direction.unitOrthogonal();
   const Eigen::Matrix3d r =
     Eigen::AngleAxisd(turn, (axis + 0.3 * random.UnitVector()).normalized()).toRotationMatrix();
   const Eigen::Vector3d dir = r * direction;
-  const Eigen::Vector3d focal = 0.3 * random.Uniform(0.0, 1.0) * random.UnitVector();
+  const Eigen::Vector3d focal = focalSpread * random.Uniform(0.0, 1.0) * random.UnitVector();
   const Eigen::Vector3d position = focal + random.LogUniform(4.0, 8.0) * dir;
   const Eigen::Vector3d up = r * direction.unitOrthogonal().cross(direction);
   camera->SetFocalPoint(focal.data());
@@ -212,8 +212,10 @@ struct Quality
 /// Hawkins & Grimm §5.1 on `pairs` random key pairs turning up to maxTurnDegrees, measured per
 /// key segment against the true keys (vtkCameraPathMetric::EvaluateSegments, 65 cameras).
 /// `vtkLerped`: VTK's path with the window centre lerped between the keys (VTK ignores it).
-void experiment(double minTurnDegrees, double maxTurnDegrees, int pairs, Quality& ours,
-  Quality& paper, Quality& vtk, Quality& vtkLerped)
+/// `focalSpread`: focal points within this distance of the scene's centre; `ours` with
+/// ScrewMotionOff, `screw` with the default (on).
+void experiment(double minTurnDegrees, double maxTurnDegrees, double focalSpread, int pairs,
+  Quality& ours, Quality& screw, Quality& paper, Quality& vtk, Quality& vtkLerped)
 {
   lct_test::RandomTransforms random(93);
   vtkNew<vtkPoints> scene;
@@ -230,17 +232,19 @@ void experiment(double minTurnDegrees, double maxTurnDegrees, int pairs, Quality
   {
     const Eigen::Vector3d start = random.UnitVector();
     vtkNew<vtkCamera> a, b;
-    randomCamera(random, start, 0.0, a);
-    randomCamera(random, start, random.Uniform(minTurnDegrees, maxTurnDegrees) * toRadians, b);
+    randomCamera(random, start, 0.0, a, focalSpread);
+    randomCamera(
+      random, start, random.Uniform(minTurnDegrees, maxTurnDegrees) * toRadians, b, focalSpread);
     metric->RemoveAllKeyCameras();
     metric->AddKeyCamera(0, a);
     metric->AddKeyCamera(1, b);
-    for (Quality* q : { &ours, &paper })
+    for (Quality* q : { &ours, &screw, &paper })
     {
       vtkNew<vtkCameraInterpolatorLCT> path;
       path->SetInterpolationTypeToLinear();
-      path->SetMethod(q == &ours ? vtkCameraInterpolatorLCT::METHOD_FOCAL_FRAME
-                                 : vtkCameraInterpolatorLCT::METHOD_CAMERA_MATRIX);
+      path->SetScrewMotion(q == &screw);
+      path->SetMethod(q == &paper ? vtkCameraInterpolatorLCT::METHOD_CAMERA_MATRIX
+                                  : vtkCameraInterpolatorLCT::METHOD_FOCAL_FRAME);
       path->GlobalWarningDisplayOff(); // the paper's method reports its failures; counted
       q->Add(
         metric, path->AddCamera(0, a) && path->AddCamera(1, b) && metric->EvaluateSegments(path));
@@ -252,7 +256,7 @@ void experiment(double minTurnDegrees, double maxTurnDegrees, int pairs, Quality
     vtk.Add(metric, metric->EvaluateSegments(theirs, 0));
     vtkLerped.Add(metric, metric->EvaluateSegments(theirs, 1));
   }
-  for (Quality* q : { &ours, &paper, &vtk, &vtkLerped })
+  for (Quality* q : { &ours, &screw, &paper, &vtk, &vtkLerped })
   {
     q->Finish();
   }
@@ -290,20 +294,29 @@ int main(int argc, char** argv)
   std::printf("\nPath quality (Hawkins & Grimm 5.1), 100 random key pairs each, 500 scene points "
               "in the unit ball, measured against the true keys (65 cameras); mean excess path "
               "length and largest key miss (lower is better):\n");
-  std::printf("  %-12s %-40s %10s %10s %12s %12s %9s\n", "turns", "method", "camera %", "screen %",
+  std::printf("  %-22s %-40s %10s %10s %12s %12s %9s\n", "turns", "method", "camera %", "screen %",
     "left view %", "key miss %", "failures");
-  for (const auto& range : { std::pair<double, double>(0, 90), std::pair<double, double>(90, 170) })
+  struct Set
   {
-    Quality ours, paper, vtk, vtkLerped;
-    experiment(range.first, range.second, 100, ours, paper, vtk, vtkLerped);
-    const std::string label = std::to_string(static_cast<int>(range.first)) + "-" +
-      std::to_string(static_cast<int>(range.second)) + " deg";
-    const std::pair<const char*, const Quality*> rows[] = { { "vtkCameraInterpolatorLCT", &ours },
+    double minTurn, maxTurn, focalSpread;
+    const char* label;
+  };
+  // The third set is the issue's: focal points jittered by up to 1/4 of the scene's size (2).
+  for (const Set& set : { Set{ 0, 90, 0.3, "0-90 deg" }, Set{ 90, 170, 0.3, "90-170 deg" },
+         Set{ 0, 170, 0.5, "0-170 deg, focal +-0.5" } })
+  {
+    Quality ours, screw, paper, vtk, vtkLerped;
+    experiment(set.minTurn, set.maxTurn, set.focalSpread, 100, ours, screw, paper, vtk, vtkLerped);
+    const std::string label = set.label;
+    const std::pair<const char*, const Quality*> rows[] = {
+      { "vtkCameraInterpolatorLCT, ScrewMotionOff", &ours },
+      { "vtkCameraInterpolatorLCT (default: screw)", &screw },
       { "LCT CameraMatrix (paper eq.7)", &paper }, { "vtkCameraInterpolator", &vtk },
-      { "vtkCameraInterpolator, window centre lerped", &vtkLerped } };
+      { "vtkCameraInterpolator, window centre lerped", &vtkLerped }
+    };
     for (const auto& [name, q] : rows)
     {
-      std::printf("  %-12s %-40s %10.1f %10.1f %12.2f %12.2f %9d\n", label.c_str(), name, q->camera,
+      std::printf("  %-22s %-40s %10.1f %10.1f %12.2f %12.2f %9d\n", label.c_str(), name, q->camera,
         q->screen, q->leaving, q->miss, q->failures);
     }
   }
