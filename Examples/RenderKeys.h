@@ -877,9 +877,15 @@ public:
       {
         if (!(s[i] >= Limits::MinScale))
         {
-          this->Fail(path + ".scale[" + std::to_string(i) + "] = " + Num(s[i]) +
-            ": scale factors must be in [" + Num(Limits::MinScale) + ", " + Num(Limits::MaxScale) +
-            "] (a mirror or a collapse has no rotation log)");
+          // What the factor is, then the range: 0 is singular (not a mirror), < 0 a mirror.
+          const std::string what = s[i] == 0.0
+            ? "a zero scale is singular (it flattens the object) and has no logarithm; to grow "
+              "an object from nothing, start from a tiny positive scale such as 1e-6"
+            : s[i] < 0.0 ? "a negative scale is a mirror, which has no rotation logarithm"
+                         : "too small for a usable logarithm";
+          this->Fail(path + ".scale[" + std::to_string(i) + "] = " + Num(s[i]) + ": " + what +
+            "; scale factors must be in [" + Num(Limits::MinScale) + ", " + Num(Limits::MaxScale) +
+            "]");
         }
       }
       this->Vector(key, "shear", path, 3, h, -Limits::MaxOffset, Limits::MaxOffset);

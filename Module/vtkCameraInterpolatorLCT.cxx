@@ -6,6 +6,7 @@
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
 #include "lct/RebuildOnce.h"
+#include "lct/ScrewMotion.h"
 
 #include "vtkCamera.h"
 #include "vtkObjectFactory.h"
@@ -116,6 +117,42 @@ struct vtkCameraInterpolatorLCT::Internals
   lct::KeyLogs CameraMatrices{ lct::Parametrisation::MatrixLog };
   lct::Status CameraMatricesStatus = lct::Status::Ok;
   std::atomic<bool> ClampReported{ false };
+
+  /// The focal point of the screw motion of the focal frames (lct/ScrewMotion.h) about key r:
+  /// f_r + R_r J(w) v with w = sum_j w_j log(R_r^T R_j), v = sum_j w_j J(w_j)^-1 R_r^T (f_j - f_r).
+  Eigen::Vector3d ScrewFocalPointAbout(
+    const lct::KeyLogs& orientations, const lct::CurveWeights& w, int r) const
+  {
+    const Eigen::Matrix4d& frame = this->Keys[r].Camera.focalFrame;
+    const Eigen::Matrix3d rotation = frame.topLeftCorner<3, 3>();
+    const Eigen::Vector3d origin = frame.topRightCorner<3, 1>();
+    Eigen::Vector3d rotationSum = Eigen::Vector3d::Zero(), twistSum = Eigen::Vector3d::Zero();
+    for (int j = 0; j < w.count; ++j)
+    {
+      const lct::LogCoords* log = orientations.relative(w.key[j], r);
+      const Eigen::Vector3d step = log ? Eigen::Vector3d(lct::rotationPart(*log))
+                                       : Eigen::Vector3d::Zero(); // rotations always have one
+      const Eigen::Vector3d t = rotation.transpose() *
+        (this->Keys[w.key[j]].Camera.focalFrame.topRightCorner<3, 1>() - origin);
+      rotationSum += w.weight[j] * step;
+      twistSum += w.weight[j] * lct::screwTwist(step, t);
+    }
+    return origin + rotation * lct::screwTranslation(rotationSum, twistSum);
+  }
+
+  /// The screw focal point about the key of largest weight, blended within the hand-over of
+  /// lct::KeyLogs (a weight gap below kHandOver, the same smoothstep) with the one about the
+  /// second: no jump where the reference changes, C1.
+  Eigen::Vector3d ScrewFocalPoint(
+    const lct::KeyLogs& orientations, const lct::CurveWeights& w) const
+  {
+    const lct::KeyLogs::HandOver h = lct::KeyLogs::handOver(w);
+    const Eigen::Vector3d about = this->ScrewFocalPointAbout(orientations, w, w.key[h.first]);
+    return h.share == 0.0
+      ? about
+      : Eigen::Vector3d((1.0 - h.share) * about +
+          h.share * this->ScrewFocalPointAbout(orientations, w, w.key[h.second]));
+  }
 
   static Eigen::Matrix4d Orientation(const Key& key)
   {
@@ -447,6 +484,10 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
     key.channels += w.weight[j] * k.channels;
     focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
   }
+  if (this->ScrewMotion && !this->ConsistentRotation)
+  {
+    focalPoint = in.ScrewFocalPoint(orientations, w);
+  }
   key.focalFrame.topRightCorner<3, 1>() = focalPoint;
   key.parallelProjection = in.Keys[0].Camera.parallelProjection;
   const char* why = "";
@@ -491,6 +532,7 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   static const char* const types[] = { "Linear", "Spline", "BSpline", "Subdivision" };
   os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
+  os << indent << "ScrewMotion: " << (this->ScrewMotion ? "On" : "Off") << "\n";
   os << indent << "Method: " << (this->Method == METHOD_FOCAL_FRAME ? "FocalFrame" : "CameraMatrix")
      << "\n";
   os << indent << "NumberOfCameras: " << this->GetNumberOfCameras() << "\n";

@@ -11,9 +11,10 @@
  * - its focal frame F = [right up back | focal point]: the orientation is interpolated like
  *   vtkTransformInterpolatorLCT does (relative form about the key of largest weight, short way
  *   for turns over 180 degrees between neighbouring keys; or ConsistentRotation to keep a spin),
- *   the focal point with the same curve weights. The camera therefore turns about its focal
- *   point, and the point it looks at moves on the curve through the keys' focal points (a focal
- *   point shared by all keys stays put);
+ *   and where the keys' focal points differ the whole frame moves as a screw (SetScrewMotion,
+ *   default on; off: the focal point with the same curve weights, on the curve through the
+ *   keys' focal points). The camera therefore turns about its focal point, and a focal point
+ *   shared by all keys stays put;
  * - scalar channels with the same curve weights: the distance, f = cot(view angle / 2) and the
  *   parallel scale geometrically, the window centre and view shear linearly, the clipping
  *   range geometrically relative to the distance.
@@ -175,6 +176,22 @@ public:
   int SetMethodToCameraMatrix() { return this->SetMethod(METHOD_CAMERA_MATRIX); }
   ///@}
 
+  ///@{
+  /**
+   * FocalFrame method: move the focal frame [orientation | focal point] as a screw motion where
+   * the keys' focal points differ (issue #12 §2): the twist of each key's frame relative to the
+   * reference key (its rigid logarithm: rotation vector w and v = J(w)^-1 t; lct/ScrewMotion.h)
+   * blended with the curve weights, so the focal point moves on a helix about the turn's axis
+   * instead of on the curve through the focal points. Keys sharing their focal point give the
+   * same path either way. Default on: it moves scene points less on every set measured (README,
+   * camera-path quality: 8.0 % / 17.6 % against 10.3 % / 21.2 % with jittered focal points);
+   * ignored with ConsistentRotation (the focal point is then combined linearly).
+   */
+  vtkSetMacro(ScrewMotion, vtkTypeBool);
+  vtkGetMacro(ScrewMotion, vtkTypeBool);
+  vtkBooleanMacro(ScrewMotion, vtkTypeBool);
+  ///@}
+
 protected:
   vtkCameraInterpolatorLCT();
   ~vtkCameraInterpolatorLCT() override;
@@ -182,6 +199,7 @@ protected:
   int InterpolationType = INTERPOLATION_TYPE_SPLINE;
   vtkTypeBool ConsistentRotation = false;
   int Method = METHOD_FOCAL_FRAME;
+  vtkTypeBool ScrewMotion = true;
 
 private:
   vtkCameraInterpolatorLCT(const vtkCameraInterpolatorLCT&) = delete;

@@ -16,6 +16,21 @@
  * Lower is better: 0 means every point moves on a straight line, in camera space or on the
  * screen respectively.
  *
+ * That chord from the first to the last sample is Hawkins & Grimm's for a key PAIR. For a path
+ * through several keys use the per-segment measure (issue #12): give the true key cameras
+ * (AddKeyCamera) and call EvaluateSegments with an interpolator, LCT's or VTK's. Each key
+ * segment is then sampled at GetSamplesPerSegment() cameras (a resolution chosen here, so the
+ * result does not depend on how many frames are rendered), and each point's length runs from
+ * its position in the TRUE key camera, through the path's samples, to its position in the next
+ * true key camera: a path that misses its keys pays the misses in its length and can never read
+ * below 0. The chord is between the true key positions; the total is against the polygon
+ * through them. How far the path misses each key is reported next to the excess (camera space:
+ * % of the point's distance; screen: % of the screen height), and points leaving the view are
+ * counted only on segments where they are in view at both keys. For VTK's
+ * vtkCameraInterpolator, which ignores the window centre, EvaluateSegments can give its
+ * cameras the window centre lerped between the keys (the fair baseline; say so when you print
+ * it). See lct/SegmentPathMetric.h for the definitions.
+ *
  * @sa vtkCameraInterpolatorLCT vtkCameraInterpolator
  */
 #ifndef vtkCameraPathMetric_h
@@ -28,9 +43,11 @@
 #include <Eigen/Core>      // For the sampled matrices
 #include <Eigen/StdVector> // For the sampled matrices
 
+#include <memory> // For the segment results
 #include <vector> // For the per-point flags
 
 class vtkCamera;
+class vtkCameraInterpolator;
 class vtkCameraInterpolatorLCT;
 class vtkCollection;
 class vtkPoints;
@@ -93,15 +110,79 @@ public:
   int GetPointLeftView(vtkIdType i);
   ///@}
 
+  ///@{
+  /**
+   * The true key cameras the per-segment measure compares a path with (copied; a key at an
+   * existing time replaces it). AddKeyCamera returns 0 (with an error, keys unchanged) for a
+   * null camera or a non-finite time.
+   */
+  int AddKeyCamera(double t, vtkCamera* camera);
+  void RemoveAllKeyCameras();
+  int GetNumberOfKeyCameras();
+  ///@}
+
+  ///@{
+  /**
+   * Cameras sampled per key segment by EvaluateSegments, both keys included. Default 65, where
+   * the lengths of smooth paths have converged (the inscribed polygon of a 55 degree arc is short
+   * by 4e-5 of it); 2 to 1000. It is the metric's resolution, not the number of frames a user
+   * renders; lower it only for paths with very many keys (the samples' matrices are kept, 256
+   * bytes each, at most 2e6 in all).
+   */
+  vtkSetClampMacro(SamplesPerSegment, int, 2, 1000);
+  vtkGetMacro(SamplesPerSegment, int);
+  ///@}
+
+  ///@{
+  /**
+   * The per-segment measure of `path` against the key cameras (at least two). With VTK's
+   * interpolator and `lerpWindowCenter` on, each sampled camera gets the window centre
+   * interpolated linearly in time between the key cameras' (VTK 9.1 ignores the window centre,
+   * so its path would otherwise miss every key with a shifted one). Returns 1 on success, 0
+   * (with an error, results unchanged) without points or key cameras, with a NaN/Inf point, a
+   * null path, a path that fails at a sample, more than 2e6 samples in all, or when no point can
+   * be measured.
+   */
+  int EvaluateSegments(vtkCameraInterpolatorLCT* path);
+  int EvaluateSegments(vtkCameraInterpolator* path, int lerpWindowCenter);
+  ///@}
+
+  ///@{
+  /**
+   * Results of the last successful EvaluateSegments: per segment k (0 .. keys - 2) and in
+   * total (against the polygon through the key positions), excess in camera space and on the
+   * screen in percent; points that leave the view between two keys at which they are in view;
+   * per key the mean miss of the path (camera space: % of the point's distance; screen: % of
+   * the screen height) and the largest over the keys. Out-of-range indices give 0.
+   */
+  int GetNumberOfSegments();
+  double GetSegmentCameraSpaceExcess(int k);
+  double GetSegmentScreenSpaceExcess(int k);
+  int GetSegmentPointsLeavingView(int k);
+  double GetKeyMissCameraSpace(int key);
+  double GetKeyMissScreenSpace(int key);
+  vtkGetMacro(TotalCameraSpaceExcess, double);
+  vtkGetMacro(TotalScreenSpaceExcess, double);
+  vtkGetMacro(NumberOfPointsLeavingViewBetweenKeys, int);
+  vtkGetMacro(LargestKeyMissCameraSpace, double);
+  vtkGetMacro(LargestKeyMissScreenSpace, double);
+  ///@}
+
 protected:
   vtkCameraPathMetric();
   ~vtkCameraPathMetric() override;
 
   double Aspect = 1.0;
   int NumberOfSamples = 11;
+  int SamplesPerSegment = 65;
   double CameraSpaceExcess = 0.0;
   double ScreenSpaceExcess = 0.0;
   int NumberOfPointsLeavingView = 0;
+  double TotalCameraSpaceExcess = 0.0;
+  double TotalScreenSpaceExcess = 0.0;
+  int NumberOfPointsLeavingViewBetweenKeys = 0;
+  double LargestKeyMissCameraSpace = 0.0;
+  double LargestKeyMissScreenSpace = 0.0;
 
 private:
   vtkCameraPathMetric(const vtkCameraPathMetric&) = delete;
@@ -110,6 +191,12 @@ private:
   /// Appends the view and composite projection matrices of `camera`.
   void Sample(vtkCamera* camera);
   int Measure();
+  /// Samples every key segment through `sample(t, camera)` and measures against the keys.
+  template <typename Sampler>
+  int MeasureSegments(const char* caller, Sampler&& sample);
+
+  struct SegmentResults;
+  std::unique_ptr<SegmentResults> Segments;
 
   std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> Views, Projections;
 

@@ -5,6 +5,7 @@
 #include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
+#include "lct/MonotoneTangents.h"
 #include "lct/Parametrisation.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/RebuildOnce.h"
@@ -208,6 +209,23 @@ struct vtkTransformInterpolatorLCT::Internals
       matrices.push_back(key->Matrix);
     }
     return matrices;
+  }
+
+  /// The monotone tangents at the keys of the segment holding t (lct/MonotoneTangents.h), from
+  /// the steps to each key's neighbours in its own frame; the end keys keep their one-sided
+  /// tangents (the secant).
+  static lct::SegmentTangents TangentsAt(
+    const lct::KeyLogs& logs, const double* times, int n, double t)
+  {
+    const auto tangentOf = [&](int k) {
+      const lct::LogCoords* previous = k > 0 ? logs.relative(k - 1, k) : nullptr;
+      const lct::LogCoords* next = k + 1 < n ? logs.relative(k + 1, k) : nullptr;
+      return previous && next
+        ? lct::monotoneTangent(*previous, *next, times[k] - times[k - 1], times[k + 1] - times[k])
+        : lct::catmullRomTangent(times, n, k);
+    };
+    const int i = lct::curveSegment(times, n, t);
+    return { tangentOf(i), tangentOf(i + 1) };
   }
 
   /// The key logs, rebuilt if stale. Null, with LogsStatus saying why, when they cannot be.
@@ -827,7 +845,10 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << "; output unchanged.");
     return false;
   }
-  const lct::CurveWeights w = lct::curveWeights(scheme, in.Keys.times().data(), n, t);
+  const double* times = in.Keys.times().data();
+  const lct::CurveWeights w = scheme == lct::CurveScheme::CatmullRom && this->MonotoneTangents
+    ? lct::curveWeights(scheme, times, n, t, Internals::TangentsAt(*logs, times, n, t))
+    : lct::curveWeights(scheme, times, n, t);
   Eigen::Matrix4d result;
   lct::MissingLog missing;
   const lct::Status status = this->ConsistentRotation ? logs->combineAbsolute(w, result, &missing)
@@ -901,6 +922,7 @@ void vtkTransformInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
   os << indent << "Parametrisation: " << lct::name(toCore(this->Parametrisation)) << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
+  os << indent << "MonotoneTangents: " << (this->MonotoneTangents ? "On" : "Off") << "\n";
   os << indent << "NumberOfTransforms: " << this->GetNumberOfTransforms() << "\n";
   if (!this->Internal->Keys.empty())
   {

@@ -133,7 +133,8 @@ double fundamental(double x)
     (u3 - u2) * d[i + 1];
 }
 
-void catmullRom(CurveWeights& out, const double* times, int n, int i, double u)
+void hermite(
+  CurveWeights& out, const double* times, int n, int i, double u, const SegmentTangents& tangents)
 {
   // Hermite basis on segment i, h = t[i+1] - t[i].
   const double u2 = u * u;
@@ -145,16 +146,24 @@ void catmullRom(CurveWeights& out, const double* times, int n, int i, double u)
   const double h = times[i + 1] - times[i];
   out.add(i, h00);
   out.add(i + 1, h01);
-  // Tangent at key k: (p[k+1] - p[k-1]) / (t[k+1] - t[k-1]), one-sided at the ends.
-  auto addTangent = [&](int k, double scale) {
-    const int lo = std::max(k - 1, 0);
-    const int hi = std::min(k + 1, n - 1);
-    const double c = scale / (times[hi] - times[lo]);
-    out.add(hi, c);
-    out.add(lo, -c);
+  // The tangent at key k: before (p[k] - p[k-1]) / h- + after (p[k+1] - p[k]) / h+, each secant
+  // only where it exists.
+  auto addTangent = [&](int k, const KeyTangent& tangent, double scale) {
+    if (k > 0)
+    {
+      const double c = scale * tangent.before / (times[k] - times[k - 1]);
+      out.add(k, c);
+      out.add(k - 1, -c);
+    }
+    if (k + 1 < n)
+    {
+      const double c = scale * tangent.after / (times[k + 1] - times[k]);
+      out.add(k + 1, c);
+      out.add(k, -c);
+    }
   };
-  addTangent(i, h10 * h);
-  addTangent(i + 1, h11 * h);
+  addTangent(i, tangents.start, h10 * h);
+  addTangent(i + 1, tangents.end, h11 * h);
 }
 
 void bSpline(CurveWeights& out, int n, int i, double u)
@@ -187,7 +196,44 @@ void subdivision(CurveWeights& out, int n, int i, double u)
 
 } // namespace
 
+KeyTangent catmullRomTangent(const double* times, int keyCount, int k)
+{
+  if (k <= 0)
+  {
+    return { 0.0, 1.0 };
+  }
+  if (k >= keyCount - 1)
+  {
+    return { 1.0, 0.0 };
+  }
+  const double before = times[k] - times[k - 1], after = times[k + 1] - times[k];
+  return { before / (before + after), after / (before + after) };
+}
+
 CurveWeights curveWeights(CurveScheme scheme, const double* times, int keyCount, double t)
+{
+  if (scheme == CurveScheme::CatmullRom && keyCount > 1)
+  {
+    const int i = curveSegment(times, keyCount, t);
+    return curveWeights(scheme, times, keyCount, t,
+      SegmentTangents{
+        catmullRomTangent(times, keyCount, i), catmullRomTangent(times, keyCount, i + 1) });
+  }
+  return curveWeights(scheme, times, keyCount, t, SegmentTangents{});
+}
+
+int curveSegment(const double* times, int keyCount, double t)
+{
+  if (keyCount <= 1)
+  {
+    return 0;
+  }
+  double u;
+  return segmentOf(times, keyCount, std::clamp(t, times[0], times[keyCount - 1]), u);
+}
+
+CurveWeights curveWeights(
+  CurveScheme scheme, const double* times, int keyCount, double t, const SegmentTangents& tangents)
 {
   CurveWeights out;
   if (keyCount <= 1)
@@ -205,7 +251,7 @@ CurveWeights curveWeights(CurveScheme scheme, const double* times, int keyCount,
       out.add(i + 1, u);
       break;
     case CurveScheme::CatmullRom:
-      catmullRom(out, times, keyCount, i, u);
+      hermite(out, times, keyCount, i, u, tangents);
       break;
     case CurveScheme::BSpline:
       bSpline(out, keyCount, i, u);

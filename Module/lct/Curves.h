@@ -63,6 +63,35 @@ struct CurveWeights
 VTKLCT_EXPORT CurveWeights curveWeights(
   CurveScheme scheme, const double* times, int keyCount, double t);
 
+/// The tangent at a key k as a combination of its two secants, m = before (x[k] - x[k-1]) / h-
+/// + after (x[k+1] - x[k]) / h+ (h-, h+ the time steps). Catmull-Rom on non-uniform times is
+/// before = h- / (h- + h+), after = h+ / (h- + h+): m = (x[k+1] - x[k-1]) / (t[k+1] - t[k-1]).
+/// At the first key only `after` counts, at the last only `before` (there is no other secant).
+struct KeyTangent
+{
+  double before = 0.5;
+  double after = 0.5;
+};
+/// Catmull-Rom's KeyTangent at key k of keyCount keys (one-sided at the ends: the secant).
+VTKLCT_EXPORT KeyTangent catmullRomTangent(const double* times, int keyCount, int k);
+
+/// The tangents of the Hermite segment holding t, at its first key (`start`, key
+/// curveSegment(t)) and at the next (`end`), for CatmullRom (the other schemes ignore them).
+/// A key's tangent must be the same on both segments beside it for the curve to be C1.
+struct SegmentTangents
+{
+  KeyTangent start;
+  KeyTangent end;
+};
+/// CatmullRom with the given tangents (e.g. lct::monotoneTangent); with catmullRomTangent at both
+/// keys it equals curveWeights(CatmullRom, ...).
+VTKLCT_EXPORT CurveWeights curveWeights(
+  CurveScheme scheme, const double* times, int keyCount, double t, const SegmentTangents& tangents);
+
+/// The segment i with times[i] <= t <= times[i + 1] that curveWeights uses for t (t clamped to
+/// the keys; 0 with fewer than two keys).
+VTKLCT_EXPORT int curveSegment(const double* times, int keyCount, double t);
+
 /// The number of segments of keyCount keys (1 for a single key).
 inline int curveSegments(int keyCount)
 {

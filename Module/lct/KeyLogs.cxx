@@ -483,9 +483,9 @@ Status KeyLogs::combineRelative(
   return check;
 }
 
-Status KeyLogs::combineRelativeUnchecked(
-  const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const
+KeyLogs::HandOver KeyLogs::handOver(const CurveWeights& w)
 {
+  HandOver h;
   int a = -1;
   int b = -1;
   for (int j = 0; j < w.count; ++j)
@@ -500,9 +500,24 @@ Status KeyLogs::combineRelativeUnchecked(
       b = j;
     }
   }
-  const Status status = this->combineAbout(w, w.key[a], out, missing);
+  h.first = std::max(a, 0);
+  h.second = b;
   const double gap = b < 0 ? kHandOver : w.weight[a] - w.weight[b];
-  if (status != Status::Ok || gap >= kHandOver)
+  if (gap < kHandOver)
+  {
+    const double x = gap / kHandOver;
+    h.share = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
+  }
+  return h;
+}
+
+Status KeyLogs::combineRelativeUnchecked(
+  const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const
+{
+  const HandOver h = handOver(w);
+  const int a = h.first, b = h.second;
+  const Status status = this->combineAbout(w, w.key[a], out, missing);
+  if (status != Status::Ok || h.share == 0.0)
   {
     return status;
   }
@@ -511,8 +526,7 @@ Status KeyLogs::combineRelativeUnchecked(
   {
     return status; // no result about b: keep the one about a
   }
-  const double x = gap / kHandOver;
-  const double s = 0.5 * (1.0 - x * x * (3.0 - 2.0 * x));
+  const double s = h.share;
   // R_a (R_a^-1 R_b)^s: at s = 1/2 the same point from either side.
   const bool accurate = this->Accurate[w.key[a]] || this->Accurate[w.key[b]];
   const auto blend = matrixPower(relativeStep(out, other), s);

@@ -146,6 +146,18 @@ public:
   /// Why relative(i, r) is null (Ok when it is not; InvalidArgument beyond reach).
   Status relativeStatus(int i, int r) const;
 
+  /// The references of a curve point: entries `first` (largest weight) and `second` (the next,
+  /// -1 with one entry) of w, and `share` in [0, 1/2], how much of the result about `second` the
+  /// hand-over blends in (0 when the weights are kHandOver or more apart, 1/2 where they cross,
+  /// a smoothstep in between).
+  struct HandOver
+  {
+    int first = 0;
+    int second = -1;
+    double share = 0.0;
+  };
+  static HandOver handOver(const CurveWeights& w);
+
   /// The relative form about the point of largest weight, with the hand-over. Fails, leaving
   /// `out` unchanged, with the status of a missing relative log (then named in `missing`, if
   /// given) or of the exp, or with OutOfRange when the result is not finite.

@@ -20,9 +20,9 @@ const char* describe(Status status) noexcept
              "and has no logarithm; to grow an object from nothing, start from a tiny positive "
              "scale such as 1e-6";
     case Status::IllConditioned:
-      return "the linear part is too ill-conditioned (the ratio of its largest to its smallest "
-             "stretch exceeds 1e13, beyond which double precision cannot represent the smallest "
-             "stretch to 3 digits)";
+      return "the linear part is numerically singular: too ill-conditioned (the ratio of its "
+             "largest to its smallest stretch exceeds 1e13, beyond which double precision cannot "
+             "represent the smallest stretch to 3 digits)";
     case Status::NoRealLogarithm:
       return "the linear part has a negative real eigenvalue (or one too close to the negative "
              "real axis for an accurate result), so it has no real matrix logarithm";

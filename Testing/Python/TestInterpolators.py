@@ -124,5 +124,56 @@ class CameraInterpolator(unittest.TestCase):
         self.assertEqual(path.GetNumberOfCameras(), 1)
 
 
+
+class Issue12(unittest.TestCase):
+    def test_monotone_tangents_do_not_swing_past_the_keys(self):
+        peaks = {}
+        for monotone in (1, 0):
+            path = vtkTransformInterpolatorLCT()
+            path.SetMonotoneTangents(monotone)
+            self.assertEqual(path.GetMonotoneTangents(), monotone)
+            for k, angle in enumerate((0.0, 179.9, 180.0)):
+                t = vtkTransform()
+                t.RotateZ(angle)
+                self.assertEqual(path.AddTransform(k, t), 1)
+            m = vtkMatrix4x4()
+            peak = 0.0
+            for s in range(2001):
+                self.assertEqual(path.InterpolateTransform(2.0 * s / 2000, m), 1)
+                a = math.degrees(math.atan2(m.GetElement(1, 0), m.GetElement(0, 0)))
+                peak = max(peak, a + 360.0 if a < -90.0 else a)
+            peaks[monotone] = peak
+        self.assertLessEqual(peaks[1], 180.0 + 1e-9)
+        self.assertGreater(peaks[0], 185.0)  # plain Catmull-Rom overshoots
+
+    def test_segment_metric_against_the_keys(self):
+        from vtklct import vtkCameraPathMetric
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkRenderingCore import vtkCameraInterpolator
+
+        lct, vtk, metric = vtkCameraInterpolatorLCT(), vtkCameraInterpolator(), vtkCameraPathMetric()
+        for k in range(3):
+            c = vtkCamera()
+            c.SetPosition(8 * math.sin(0.5 * k), 1, 8 * math.cos(0.5 * k))
+            c.SetWindowCenter(0.3 * (k == 1), 0.0)
+            lct.AddCamera(k, c)
+            vtk.AddCamera(k, c)
+            self.assertEqual(metric.AddKeyCamera(k, c), 1)
+        points = vtkPoints()
+        for i in range(27):
+            points.InsertNextPoint(i % 3 - 1, (i // 3) % 3 - 1, i // 9 - 1)
+        metric.SetPoints(points)
+        self.assertEqual(metric.EvaluateSegments(lct), 1)
+        self.assertEqual(metric.GetNumberOfSegments(), 2)
+        self.assertLess(metric.GetLargestKeyMissScreenSpace(), 1e-9)
+        self.assertEqual(metric.EvaluateSegments(vtk, 0), 1)
+        self.assertAlmostEqual(metric.GetKeyMissScreenSpace(1), 15.0, delta=0.5)  # 0.3 of NDC
+        self.assertEqual(metric.EvaluateSegments(vtk, 1), 1)
+        self.assertLess(metric.GetLargestKeyMissScreenSpace(), 1e-3)
+        errors = ErrorRecorder(metric)
+        self.assertEqual(metric.AddKeyCamera(float("nan"), vtkCamera()), 0)
+        self.assertEqual(errors.count, 1)
+        self.assertEqual(metric.GetNumberOfKeyCameras(), 3)
+
 if __name__ == "__main__":
     unittest.main()

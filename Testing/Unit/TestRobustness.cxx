@@ -9,6 +9,7 @@
 #include "RandomTransforms.h"
 #include "VtkTestHelpers.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCollection.h"
 #include "vtkMatrix4x4.h"
@@ -154,13 +155,63 @@ TEST(Robustness, SingularKeyIsRejectedNotTheGoodKeyAfterIt)
   vtkNew<ErrorCounter> errors;
   path->AddObserver(vtkCommand::ErrorEvent, errors);
   EXPECT_EQ(path->AddTransform(0.0, diagonalMatrix(1e-20, 1, 1)), 0);
-  EXPECT_TRUE(contains(errors->Last, "ill-conditioned")) << errors->Last;
+  // The key itself is named, with the words vtkLogTransform::SetMatrix uses for it.
+  EXPECT_TRUE(contains(errors->Last,
+    "AddTransform at t = 0: the linear part is numerically "
+    "singular"))
+    << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "step")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "Polar")) << errors->Last; // the one in use: no advice
   EXPECT_EQ(path->AddTransform(0.0, diagonalMatrix(0, 0, 0)), 0);
+  // A zero scale is singular, not a mirror, and the message gives the workaround.
   EXPECT_TRUE(contains(errors->Last, "singular")) << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "tiny positive scale")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "mirror")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "reflection")) << errors->Last;
   EXPECT_FALSE(contains(errors->Last, "use the")) << errors->Last;
+  EXPECT_EQ(path->AddTransform(0.0, diagonalMatrix(-1, 1, 1)), 0);
+  EXPECT_TRUE(contains(errors->Last, "reflection")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "singular")) << errors->Last;
+  EXPECT_EQ(errors->Count, 3);
   vtkNew<vtkMatrix4x4> identity;
   EXPECT_EQ(path->AddTransform(1.0, identity), 1);
   EXPECT_EQ(path->GetNumberOfTransforms(), 1);
+  EXPECT_EQ(errors->Count, 3);
+  // The same key as a vtkLogTransform gets the same cause.
+  vtkNew<vtkLogTransform> single;
+  single->AddObserver(vtkCommand::ErrorEvent, errors);
+  EXPECT_EQ(single->SetMatrix(diagonalMatrix(1e-20, 1, 1)), 0);
+  EXPECT_TRUE(contains(errors->Last, "numerically singular")) << errors->Last;
+  // MatrixLog refuses it for the same reason, and does not advise Polar, which refuses it too.
+  vtkNew<vtkTransformInterpolatorLCT> matrixLog;
+  matrixLog->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(matrixLog->SetParametrisationToMatrixLog(), 1);
+  EXPECT_EQ(matrixLog->AddTransform(0.0, diagonalMatrix(1e-20, 1, 1)), 0);
+  EXPECT_TRUE(contains(errors->Last, "numerically singular")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "Polar")) << errors->Last;
+  EXPECT_EQ(matrixLog->AddTransform(1.0, identity), 1);
+}
+
+TEST(Robustness, ZeroScaleOfAPropIsSingularWithTheWorkaround)
+{
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkActor> prop;
+  prop->SetScale(0, 0, 0); // "grow from nothing"
+  EXPECT_EQ(path->AddTransform(0.0, prop), 0);
+  EXPECT_TRUE(contains(errors->Last, "singular")) << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "1e-6")) << errors->Last;
+  EXPECT_FALSE(contains(errors->Last, "mirror")) << errors->Last;
+  // The documented workaround is accepted and grows the prop.
+  prop->SetScale(1e-6, 1e-6, 1e-6);
+  ASSERT_EQ(path->AddTransform(0.0, prop), 1);
+  prop->SetScale(1, 1, 1);
+  ASSERT_EQ(path->AddTransform(1.0, prop), 1);
+  vtkNew<vtkMatrix4x4> m;
+  ASSERT_EQ(path->InterpolateTransform(0.5, m), 1);
+  EXPECT_NEAR(m->GetElement(0, 0), 1e-3, 1e-12); // geometric mean of 1e-6 and 1
+  EXPECT_EQ(errors->Count, 1);
 }
 
 TEST(Robustness, StepBetweenExtremeKeysIsNamed)
@@ -186,24 +237,31 @@ TEST(Robustness, StepBetweenExtremeKeysIsNamed)
   EXPECT_TRUE(contains(errors->Last, "SetParametrisationToPolar")) << errors->Last;
 }
 
+/// Translation keys 0, 1.65e308, 1.65e308, 0 at t = 0 .. 3.
+static void addHugePlateau(vtkTransformInterpolatorLCT* path)
+{
+  const double x[4] = { 0.0, 1.65e308, 1.65e308, 0.0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkMatrix4x4> m;
+    m->SetElement(0, 3, x[k]);
+    ASSERT_EQ(path->AddTransform(k, m), 1);
+  }
+}
+
 TEST(Robustness, SplineOvershootThatOverflowsIsAnErrorNotInf)
 {
   for (int type : { vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
          vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION })
   {
     vtkNew<vtkTransformInterpolatorLCT> path;
+    path->MonotoneTangentsOff(); // plain Catmull-Rom overshoots (the default does not: below)
     path->SetInterpolationType(type);
     vtkNew<ErrorCounter> errors;
     path->AddObserver(vtkCommand::ErrorEvent, errors);
     // Steps of 1.65e308 are representable; the overshoot between the middle keys (12.5 % above
     // them for uniform Catmull-Rom) is not.
-    const double x[4] = { 0.0, 1.65e308, 1.65e308, 0.0 };
-    for (int k = 0; k < 4; ++k)
-    {
-      vtkNew<vtkMatrix4x4> m;
-      m->SetElement(0, 3, x[k]);
-      ASSERT_EQ(path->AddTransform(k, m), 1);
-    }
+    addHugePlateau(path);
     vtkNew<vtkMatrix4x4> out;
     int failures = 0;
     for (int i = 0; i <= 60; ++i)
@@ -222,6 +280,21 @@ TEST(Robustness, SplineOvershootThatOverflowsIsAnErrorNotInf)
     EXPECT_GT(failures, 0); // the overshoot past 1.7e308 does overflow
     EXPECT_EQ(errors->Count, failures);
     EXPECT_TRUE(contains(errors->Last, "out of the range")) << errors->Last;
+  }
+}
+
+TEST(Robustness, MonotoneSplineDoesNotOvershootIntoOverflow)
+{
+  // The keys of the test above: the default Spline's tangents stay below the secants, so the
+  // curve stays within [0, 1.65e308] and every point is finite.
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  addHugePlateau(path);
+  vtkNew<vtkMatrix4x4> out;
+  for (int i = 0; i <= 60; ++i)
+  {
+    ASSERT_EQ(path->InterpolateTransform(i / 20.0, out), 1) << i;
+    EXPECT_GE(out->GetElement(0, 3), 0.0);
+    EXPECT_LE(out->GetElement(0, 3), 1.65e308);
   }
 }
 
