@@ -26,12 +26,19 @@ int main(int argc, char* argv[])
                  "  vtkProbeDeformerLCT side by side to OUTDIR/frame_NNNN.png.\n";
     return 2;
   }
-  const bool fileGiven = argc >= 3;
+  // Two arguments are FILE OUTDIR unless the second is a frame count (OUTDIR FRAMES).
+  const auto isCount = [](const char* text) {
+    char* end = nullptr;
+    std::strtol(text, &end, 10);
+    return *text && !*end;
+  };
+  const bool fileGiven = argc == 4 || (argc == 3 && !isCount(argv[2]));
   const std::string file = fileGiven ? argv[1] : "/usr/share/assimp/models/X/BCN_Epileptic.X";
   const std::string outdir = fileGiven ? argv[2] : argv[1];
+  const char* countText = argc == 4 ? argv[3] : (argc == 3 && !fileGiven ? argv[2] : nullptr);
   char* end = nullptr;
-  const long frames = argc == 4 ? std::strtol(argv[3], &end, 10) : 48;
-  if ((argc == 4 && *end) || frames < 1 || frames > 100000)
+  const long frames = countText ? std::strtol(countText, &end, 10) : 48;
+  if ((countText && (!*countText || *end)) || frames < 1 || frames > 100000)
   {
     std::cerr << "SkinnedCharacter: FRAMES must be an integer in [1, 100000]\n";
     return 2;
