@@ -22,21 +22,9 @@
 
 namespace
 {
+using lct_fuzz::FromVtk;
 using lct_fuzz::Show;
-using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
-
-vtkSmartPointer<vtkMatrix4x4> ToVtk(const Eigen::Matrix4d& m)
-{
-  auto v = vtkSmartPointer<vtkMatrix4x4>::New();
-  const RowMajor4 rows = m;
-  v->DeepCopy(rows.data());
-  return v;
-}
-
-Eigen::Matrix4d FromVtk(vtkMatrix4x4* m)
-{
-  return RowMajor4(Eigen::Map<const RowMajor4>(m->GetData()));
-}
+using lct_fuzz::ToVtk;
 
 /// A sentinel output: untouched means still this.
 void Poison(vtkMatrix4x4* m)

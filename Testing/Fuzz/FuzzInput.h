@@ -17,9 +17,11 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkLogger.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkOutputWindow.h"
+#include "vtkSmartPointer.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -617,6 +619,23 @@ public:
     return window;
   }
 };
+
+/// VTK's row-major 4x4 storage.
+using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
+
+/// A new vtkMatrix4x4 holding m.
+inline vtkSmartPointer<vtkMatrix4x4> ToVtk(const Eigen::Matrix4d& m)
+{
+  auto v = vtkSmartPointer<vtkMatrix4x4>::New();
+  const RowMajor4 rows = m;
+  v->DeepCopy(rows.data());
+  return v;
+}
+
+inline Eigen::Matrix4d FromVtk(vtkMatrix4x4* m)
+{
+  return RowMajor4(Eigen::Map<const RowMajor4>(m->GetData()));
+}
 
 } // namespace lct_fuzz
 

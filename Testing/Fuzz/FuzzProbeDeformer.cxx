@@ -26,15 +26,8 @@
 
 namespace
 {
-using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
-
-vtkSmartPointer<vtkMatrix4x4> ToVtk(const Eigen::Matrix4d& m)
-{
-  auto v = vtkSmartPointer<vtkMatrix4x4>::New();
-  const RowMajor4 rows = m;
-  v->DeepCopy(rows.data());
-  return v;
-}
+using lct_fuzz::RowMajor4;
+using lct_fuzz::ToVtk;
 
 std::vector<double> PointsOf(vtkPointSet* p)
 {
