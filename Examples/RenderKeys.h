@@ -2752,10 +2752,11 @@ inline void CheckMeshFile(const std::string& file, const std::string& ext)
   {
     CheckGltf(text, ext == ".glb");
   }
-  else
+  else if (ext == ".vtp" || ext == ".vtu")
   {
-    CheckVtp(text); // .vtp and .vtu
+    CheckVtp(text);
   }
+  // assimp's formats: the checks above and those of what the reader produced (CheckMeshData).
 }
 
 /// The checks of what a reader produced: points and cells present and within the limits, every

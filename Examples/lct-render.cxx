@@ -41,6 +41,7 @@
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
+#include "vtkSkinnedMeshReaderLCT.h"
 #include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
@@ -177,7 +178,10 @@ fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = ms
   and matrix (16 numbers, row-major, last row 0 0 0 1) or translate = [0,0,0],
   rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0].
   Unknown keys are errors (a misspelt field would otherwise silently keep its default).
-  Object files: .vtp .vtu .vtk (legacy POLYDATA) .stl .ply .obj .glb .gltf; a relative name is
+  Object files: .vtp .vtu .vtk (legacy POLYDATA) .stl .ply .obj .glb .gltf (VTK's readers), and
+  every other format assimp reads (.fbx .dae .x .3ds .blend .ms3d .md5mesh .lwo .off ...; an
+  unsupported extension's message lists them all): all of the file's meshes in their bind pose,
+  triangulated, with the bone weights as point data (vtkSkinnedMeshReaderLCT). A relative name is
   relative to the keys file's folder. color_by names a point array (else a cell array); arrays
   of several components are coloured by their magnitude. Colours are [r, g, b] in [0, 1].
   Without a "scene" section: no objects (give --mesh or --demo-scene), VTK's headlight, the
@@ -245,6 +249,8 @@ process (a crash or a runaway allocation of the reader is an error message, not 
   .vtp .vtu  declared NumberOf* counts against the limits; the XML and its data are VTK's
   .glb     the 12-byte header: magic, version 2, length = the file's size; .gltf: a JSON
            object with "asset"; the rest is VTK's vtkGLTFReader (in the child process)
+  assimp's formats: the checks of all; the rest is assimp's (vtkSkinnedMeshReaderLCT, in the
+           child process)
 
 Run it under `xvfb-run -a` when there is no display.
 exit codes: 0 ok, 1 error (bad input, failed interpolation, failed write), 2 usage,
@@ -741,7 +747,7 @@ vtkSmartPointer<vtkPolyData> Geometry(vtkPolyData* mesh)
   return out;
 }
 
-/// The mesh formats lct-render reads, by lower-case extension, and VTK's reader for each.
+/// The mesh formats VTK's readers read, by lower-case extension, and VTK's reader for each.
 const std::map<std::string, const char*>& MeshReaders()
 {
   static const std::map<std::string, const char*> readers = { { ".vtp", "vtkXMLPolyDataReader" },
@@ -749,6 +755,21 @@ const std::map<std::string, const char*>& MeshReaders()
     { ".stl", "vtkSTLReader" }, { ".ply", "vtkPLYReader" }, { ".obj", "vtkOBJReader" },
     { ".glb", "vtkGLTFReader" }, { ".gltf", "vtkGLTFReader" } };
   return readers;
+}
+
+/// The reader of a mesh file by its lower-case extension: VTK's where VTK has one, else assimp's
+/// formats (FBX, Collada, X, 3DS, Blender, ...) through vtkSkinnedMeshReaderLCT, whose output is
+/// the file's meshes in their bind pose; null for neither.
+const char* MeshReaderFor(const std::string& ext)
+{
+  const auto vtk = MeshReaders().find(ext);
+  if (vtk != MeshReaders().end())
+  {
+    return vtk->second;
+  }
+  return vtkSkinnedMeshReaderLCT::IsExtensionSupported(ext.c_str())
+    ? "vtkSkinnedMeshReaderLCT (assimp)"
+    : nullptr;
 }
 
 /// Reads `file` with VTK's reader for its extension (in the child process); volumes and
@@ -780,6 +801,12 @@ vtkSmartPointer<vtkPolyData> ReadWithVTK(const std::string& file, const std::str
   else if (ext == ".vtk")
   {
     auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(file.c_str());
+    reader = r;
+  }
+  else if (!MeshReaders().count(ext))
+  {
+    auto r = vtkSmartPointer<vtkSkinnedMeshReaderLCT>::New();
     r->SetFileName(file.c_str());
     reader = r;
   }
@@ -868,7 +895,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
   std::string ext = fs::path(file).extension().string();
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (!MeshReaders().count(ext))
+  const char* readerName = MeshReaderFor(ext);
+  if (!readerName)
   {
     std::string known;
     for (const auto& r : MeshReaders())
@@ -876,7 +904,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
       known += (known.empty() ? "" : " ") + r.first;
     }
     throw InputError(file + ": unsupported mesh format \"" + RenderKeys::Printable(ext) +
-      "\" (expected " + known + ")");
+      "\" (expected " + known + " or one of assimp's: " +
+      vtkSkinnedMeshReaderLCT::GetFileExtensions() + ")");
   }
   RenderKeys::CheckMeshFile(file, ext);
 
@@ -904,6 +933,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
     vtkNew<CapturingOutputWindow> window;
     vtkOutputWindow::SetInstance(window);
+    const std::string whose = MeshReaders().count(ext) ? "VTK's reader" : "assimp's reader";
     std::string reply;
     try
     {
@@ -917,7 +947,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
         std::string why = e.what();
         if (!window->Last.empty())
         {
-          why += " (VTK's reader said: " + window->Last + ")";
+          why += " (" + whose + " said: " + window->Last + ")";
         }
         throw InputError(why);
       }
@@ -937,12 +967,12 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
     }
     catch (const std::bad_alloc&)
     {
-      reply = "ER" + file + ": VTK's reader needs more than the 6 GiB it is given: the file " +
+      reply = "ER" + file + ": " + whose + " needs more than the 6 GiB it is given: the file " +
         "declares sizes that its data do not hold";
     }
     catch (const std::exception& e)
     {
-      reply = "ER" + file + ": VTK's reader failed: " + e.what();
+      reply = "ER" + file + ": " + whose + " failed: " + e.what();
     }
     vtkOutputWindow::SetInstance(nullptr);
     _exit(WriteAll(fds[1], reply) ? 0 : 3);
@@ -955,11 +985,11 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
   {
   }
-  const std::string reader = MeshReaders().at(ext);
   if (WIFSIGNALED(status))
   {
     const int sig = WTERMSIG(status);
-    throw InputError(file + ": VTK's " + reader + " failed on this file (" +
+    throw InputError(file + ": " + (MeshReaders().count(ext) ? "VTK's " : "") + readerName +
+      " failed on this file (" +
       (sig == SIGXCPU ? std::string("it ran out of CPU time, 120 s")
           : sig == SIGABRT
           ? std::string(

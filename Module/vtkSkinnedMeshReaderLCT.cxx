@@ -23,6 +23,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <string>
@@ -65,6 +66,14 @@ void toVtk(const Eigen::Matrix4d& m, vtkMatrix4x4* out)
     }
   }
 }
+
+std::string lowerCase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
 } // namespace
 
 struct vtkSkinnedMeshReaderLCT::Internals
@@ -130,6 +139,43 @@ vtkSkinnedMeshReaderLCT::vtkSkinnedMeshReaderLCT()
 vtkSkinnedMeshReaderLCT::~vtkSkinnedMeshReaderLCT()
 {
   this->SetFileName(nullptr);
+}
+
+std::string vtkSkinnedMeshReaderLCT::GetFileExtensions()
+{
+  std::string list; // "*.3ds;*.ac;..."
+  Assimp::Importer().GetExtensionList(list);
+  std::string out;
+  std::size_t begin = 0;
+  while (begin < list.size())
+  {
+    std::size_t end = list.find(';', begin);
+    end = end == std::string::npos ? list.size() : end;
+    std::string pattern = list.substr(begin, end - begin);
+    if (pattern.compare(0, 1, "*") == 0)
+    {
+      pattern.erase(0, 1);
+    }
+    pattern = lowerCase(pattern);
+    if (pattern.size() > 1 && pattern[0] == '.')
+    {
+      out += (out.empty() ? "" : " ") + pattern;
+    }
+    begin = end + 1;
+  }
+  return out;
+}
+
+bool vtkSkinnedMeshReaderLCT::IsExtensionSupported(const char* extension)
+{
+  if (!extension || !*extension)
+  {
+    return false;
+  }
+  const std::string wanted =
+    lowerCase(extension[0] == '.' ? extension : std::string(".") + extension);
+  const std::string all = " " + GetFileExtensions() + " ";
+  return all.find(" " + wanted + " ") != std::string::npos;
 }
 
 bool vtkSkinnedMeshReaderLCT::Load()

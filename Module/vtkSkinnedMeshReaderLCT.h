@@ -32,6 +32,7 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
 class vtkMatrix4x4;
 class vtkProbeDeformerLCT;
@@ -49,6 +50,16 @@ public:
    */
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The file extensions this reader reads (assimp's, on this system): lower case with the dot,
+   * separated by spaces (".3ds .ac .ase ..."); and whether `extension` (".fbx" or "fbx", any
+   * case) is one of them.
+   */
+  static std::string GetFileExtensions();
+  static bool IsExtensionSupported(const char* extension);
   ///@}
 
   int GetNumberOfBones();

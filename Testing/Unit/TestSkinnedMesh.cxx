@@ -168,3 +168,25 @@ TEST(SkinnedMeshReader, UnreadableFilesAreErrorsWithoutOutput)
   vtkNew<vtkProbeDeformerLCT> d;
   EXPECT_EQ(reader->ConfigureDeformer(d, 0.0), 0);
 }
+
+// The extension list lct-render uses to pick the reader: assimp's, lower case, with the dot.
+TEST(SkinnedMeshReader, FileExtensionsAreAssimpsInLowerCase)
+{
+  const std::string list = vtkSkinnedMeshReaderLCT::GetFileExtensions();
+  for (const char* ext : { ".fbx", ".dae", ".x", ".3ds", ".off", ".obj", ".bvh" })
+  {
+    EXPECT_NE((" " + list + " ").find(std::string(" ") + ext + " "), std::string::npos) << ext;
+    EXPECT_TRUE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(ext)) << ext;
+  }
+  for (char c : list)
+  {
+    EXPECT_FALSE(c >= 'A' && c <= 'Z') << list;
+  }
+  EXPECT_TRUE(vtkSkinnedMeshReaderLCT::IsExtensionSupported("FBX"));
+  EXPECT_TRUE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(".Dae"));
+  for (const char* ext : { ".json", ".vtp", "", ".", "fb", ".fbxx" })
+  {
+    EXPECT_FALSE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(ext)) << ext;
+  }
+  EXPECT_FALSE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(nullptr));
+}
