@@ -11,7 +11,9 @@
 // lost small stretch shows). Determinants are computed exactly in __float128 from the stored
 // doubles, so the check does not share the code it checks.
 //
-// Usage: BenchStress [--count N] [--seed S]. Exits 1 if any silent failure is found.
+// Usage: BenchStress [--count N] [--interpolations M] [--seed S]: N inputs per class through
+// log -> exp, M interpolator runs per class (default N / 20: a run costs about 20 logs). Exits 1
+// if any silent failure is found.
 #include "lct/Parametrisation.h"
 
 #include "vtkCommand.h"
@@ -394,6 +396,7 @@ void printRow(const char* name, const char* what, const Tally& t)
 int main(int argc, char* argv[])
 {
   long count = 1000000;
+  long interpolations = 0; // 0: count / 20
   unsigned long seed = 2026;
   for (int i = 1; i < argc; ++i)
   {
@@ -401,13 +404,22 @@ int main(int argc, char* argv[])
     {
       count = std::atol(argv[++i]);
     }
+    else if (!std::strcmp(argv[i], "--interpolations") && i + 1 < argc)
+    {
+      interpolations = std::atol(argv[++i]);
+      if (interpolations < 1)
+      {
+        std::fprintf(stderr, "--interpolations must be at least 1\n");
+        return 2;
+      }
+    }
     else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
     {
       seed = std::strtoul(argv[++i], nullptr, 10);
     }
     else
     {
-      std::fprintf(stderr, "usage: %s [--count N] [--seed S]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--count N] [--interpolations M] [--seed S]\n", argv[0]);
       return 2;
     }
   }
@@ -430,7 +442,10 @@ int main(int argc, char* argv[])
     std::string(8, '-').c_str(), std::string(11, '-').c_str(), std::string(11, '-').c_str(),
     std::string(11, '-').c_str(), std::string(10, '-').c_str());
   long silentTotal = 0;
-  const long interpolations = std::max(1L, count / 20); // an interpolator run costs ~20 logs
+  if (interpolations == 0)
+  {
+    interpolations = std::max(1L, count / 20); // an interpolator run costs ~20 logs
+  }
   for (const InputClass& c : inputClasses())
   {
     for (Parametrisation p : { Parametrisation::Polar, Parametrisation::MatrixLog })
