@@ -414,6 +414,24 @@ int vtkTransformBasisLCT::Factor(vtkMatrix4x4* transform, vtkDoubleArray* coeffi
     }
     return 0;
   }
+  const double size = f.value.coefficients.cwiseAbs().maxCoeff();
+  if (!(f.value.errorBound <= this->CoefficientTolerance * (1.0 + size)))
+  {
+    vtkErrorMacro(<< "Factor: the coefficients cannot be computed accurately in double "
+                     "precision: they are determined only to "
+                  << lct::formatNumber(f.value.errorBound) << " (largest coefficient "
+                  << lct::formatNumber(size) << ", coefficient tolerance "
+                  << lct::formatNumber(this->CoefficientTolerance)
+                  << " times 1 + that): the transform's log is known to about eps (1 + "
+                  << lct::formatNumber(lct::logNorm(c))
+                  << ") and the basis's smallest singular value is "
+                  << lct::formatNumber(basis.singularValues[basis.size() - 1])
+                  << " (Gram condition " << lct::formatNumber(basis.conditionNumber)
+                  << "); basis transforms close to the identity, or nearly dependent ones, tell "
+                     "transforms apart only as far as double precision holds them "
+                     "(SetCoefficientTolerance accepts less); coefficients unchanged.");
+    return 0;
+  }
   coefficients->SetNumberOfComponents(1);
   coefficients->SetNumberOfTuples(basis.size());
   for (int i = 0; i < basis.size(); ++i)
@@ -421,6 +439,24 @@ int vtkTransformBasisLCT::Factor(vtkMatrix4x4* transform, vtkDoubleArray* coeffi
     coefficients->SetValue(i, f.value.coefficients[i]);
   }
   this->Residual = f.value.residual;
+  this->CoefficientErrorBound = f.value.errorBound;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformBasisLCT::SetCoefficientTolerance(double tolerance)
+{
+  if (!(tolerance > 0.0))
+  {
+    vtkErrorMacro(<< "SetCoefficientTolerance: " << lct::formatNumber(tolerance)
+                  << " is not positive; unchanged.");
+    return 0;
+  }
+  if (tolerance != this->CoefficientTolerance)
+  {
+    this->CoefficientTolerance = tolerance;
+    this->Modified();
+  }
   return 1;
 }
 
@@ -505,4 +541,6 @@ void vtkTransformBasisLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Rank: " << this->GetRank() << "\n";
   os << indent << "ConditionNumber: " << this->GetConditionNumber() << "\n";
   os << indent << "Residual: " << this->Residual << "\n";
+  os << indent << "CoefficientTolerance: " << this->CoefficientTolerance << "\n";
+  os << indent << "CoefficientErrorBound: " << this->CoefficientErrorBound << "\n";
 }

@@ -157,10 +157,34 @@ public:
   /**
    * The coefficients of `transform` on the basis (one tuple per basis transform): the least
    * squares solution in log space, exact when the transform lies in the span. Sets the
-   * residual. Returns 0 with an error (coefficients untouched) for invalid input, no basis,
-   * or a rank-deficient basis.
+   * residual and GetCoefficientErrorBound(). Returns 0 with an error (coefficients untouched)
+   * for invalid input, no basis, a rank-deficient basis, or coefficients that double precision
+   * does not determine to CoefficientTolerance: their error bound exceeds
+   * CoefficientTolerance * (1 + max |x_i|). That happens for a basis of transforms close to
+   * the identity (a small smallest singular value, whatever the Gram condition number) and a
+   * transform close to the identity too: the matrix holds 1 + 3e-14 only to 1.1e-16, so a
+   * basis log of size 1e-12 gives its coefficient to about 1e-4 (Testing/Fuzz/README.md, A4).
    */
   int Factor(vtkMatrix4x4* transform, vtkDoubleArray* coefficients);
+
+  ///@{
+  /**
+   * The accuracy Factor() must reach: it refuses coefficients whose error bound exceeds
+   * CoefficientTolerance * (1 + max |x_i|) (default 1e-6). Returns 0 (unchanged) for a value
+   * that is not positive (NaN, 0 or negative); +Inf accepts every bound.
+   */
+  int SetCoefficientTolerance(double tolerance);
+  vtkGetMacro(CoefficientTolerance, double);
+  ///@}
+
+  /**
+   * A bound on the error (2-norm) of the last coefficients Factor() computed, relative to the
+   * exact coefficients of its input matrix: kLogAccuracy eps (1 + |log T|) / sigma_min plus
+   * the rounding of the solve (lct::coefficientErrorBound). Factor(Reconstruct(x)) differs
+   * from x by up to about (1 + cond(A)) times it, A the reconstruction's linear part: the
+   * rounding of that matrix adds the log's sensitivity to it.
+   */
+  vtkGetMacro(CoefficientErrorBound, double);
 
   /**
    * result = exp(origin + sum_i coefficients_i log B_i). Returns 0 with an error (result
@@ -203,6 +227,8 @@ private:
   double RankTolerance = 1e-8;
   int MaximumRank = 0;
   double Residual = 0.0;
+  double CoefficientTolerance = 1e-6;
+  double CoefficientErrorBound = 0.0;
 };
 
 #endif

@@ -70,8 +70,9 @@ Result<LogVector> weightedOffset(const LogBasis& basis, const LogCoords& c)
   return { d, Status::Ok };
 }
 
-/// origin + W^-1 (P P^T W d), the residual |W d - P P^T W d| and the least-norm coefficients.
-Result<BasisFactors> factor(const LogBasis& basis, const LogVector& weighted)
+/// origin + W^-1 (P P^T W d), the residual |W d - P P^T W d|, the least-norm coefficients and
+/// their error bound.
+Result<BasisFactors> factor(const LogBasis& basis, const LogCoords& c, const LogVector& weighted)
 {
   BasisFactors f;
   const LogVector inSpan = basis.range * (basis.range.transpose() * weighted);
@@ -82,6 +83,7 @@ Result<BasisFactors> factor(const LogBasis& basis, const LogVector& weighted)
   {
     return Result<BasisFactors>::failure(Status::OutOfRange);
   }
+  f.errorBound = coefficientErrorBound(basis, c, f.coefficients);
   return { f, Status::Ok };
 }
 
@@ -242,7 +244,7 @@ Result<BasisFactors> factorOntoBasis(const LogBasis& basis, const LogCoords& c)
   {
     return Result<BasisFactors>::failure(Status::RankDeficient);
   }
-  return factor(basis, weighted.value);
+  return factor(basis, c, weighted.value);
 }
 
 Result<BasisFactors> projectOntoBasis(const LogBasis& basis, const LogCoords& c)
@@ -252,7 +254,25 @@ Result<BasisFactors> projectOntoBasis(const LogBasis& basis, const LogCoords& c)
   {
     return Result<BasisFactors>::failure(weighted.status);
   }
-  return factor(basis, weighted.value);
+  return factor(basis, c, weighted.value);
+}
+
+double coefficientErrorBound(
+  const LogBasis& basis, const LogCoords& c, const BasisCoefficients& x) noexcept
+{
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const int k = basis.size();
+  if (k == 0 || basis.rank < k || !(basis.singularValues[k - 1] > 0.0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  // Each term divided separately, so that nothing overflows before it must.
+  const double sigmaMin = basis.singularValues[k - 1];
+  const double logError = kLogAccuracy * eps * (1.0 + logNorm(c) + logNorm(basis.origin));
+  const double bound = logError / sigmaMin + k * eps * scaledNorm(x) +
+    // The solve's last bit, where the coefficients are subnormal.
+    k * std::numeric_limits<double>::denorm_min();
+  return std::isfinite(bound) ? bound : std::numeric_limits<double>::infinity();
 }
 
 Result<LogCoords> combineBasis(const LogBasis& basis, const BasisCoefficients& coefficients)

@@ -49,6 +49,15 @@ namespace lct
 /// The dimension of the log space: no basis has more independent vectors.
 constexpr int kLogDimension = 12;
 
+/// The accuracy of the logs the core computes (lct::logarithm), in units of eps in the log norm:
+/// |log M computed - log M exact| <= kLogAccuracy eps (1 + |log M|) for the exact log of the
+/// double matrix M (first order). The largest part near the identity is polarLog's rigid snap
+/// (a stretch within 8 eps of I has log 0 exactly, |Y| up to 24 eps in the log norm); measured
+/// over near-identity and general maps against a long double oracle: at most 14 eps (1 + |c|),
+/// Unit.LogBasis.FactorErrorBoundHoldsForBasesNearTheIdentity. The round trip through a matrix
+/// rounded to double adds the log's sensitivity to that rounding, about eps cond(A) (1 + |c|).
+constexpr double kLogAccuracy = 64.0;
+
 /// Relative singular value below which a basis direction counts as dependent: sigma_i <=
 /// 1e-8 sigma_1, a Gram condition number of 1e16, where double precision keeps no digit of the
 /// coefficients.
@@ -136,11 +145,29 @@ struct BasisFactors
   BasisCoefficients coefficients; ///< x, one per basis vector
   LogCoords projection;           ///< origin + sum_i x_i vectors_i: the nearest point of the span
   double residual = 0.0;          ///< logNorm(c - projection): the distance from the span
+  /// A bound on |x - x exact|_2, x exact the coefficients of the exact log of the matrix c was
+  /// computed from (see coefficientErrorBound).
+  double errorBound = 0.0;
 };
 
-/// Coefficients of c (Alexa §6.2) and the residual. Fails with RankDeficient when the basis
-/// is (the coefficients are not unique; projectOntoBasis is still defined), NonFinite for a
-/// non-finite c, OutOfRange when the coefficients overflow.
+/// The error bound of coefficients x factored from c, a log computed by lct::logarithm: an
+/// error e in c moves the least-squares coefficients by at most |W e| / sigma_min, the norm of
+/// the solver (Q diag(1/sigma) P^T), so
+///
+///   |x - x exact|_2 <= kLogAccuracy eps (1 + |c| + |origin|) / sigma_min + k eps |x|_2,
+///
+/// the last term the rounding of the solve. This is the conditioning of factoring, not of the
+/// basis alone: the Gram condition (sigma_1 / sigma_min)^2 can be 1 while sigma_min is tiny, a
+/// basis of transforms close to the identity (|log B_i| ~ 1e-12). Such a basis tells apart
+/// transforms near the identity only as far as a double matrix holds them: an entry 1 + 3e-14
+/// keeps its 3e-14 to 1.1e-16, so their coefficients carry eps / sigma_min (Testing/Fuzz
+/// README, A4). +Inf when that overflows.
+VTKLCT_EXPORT double coefficientErrorBound(
+  const LogBasis& basis, const LogCoords& c, const BasisCoefficients& x) noexcept;
+
+/// Coefficients of c (Alexa §6.2), the residual and the coefficients' error bound. Fails with
+/// RankDeficient when the basis is (the coefficients are not unique; projectOntoBasis is still
+/// defined), NonFinite for a non-finite c, OutOfRange when the coefficients overflow.
 VTKLCT_EXPORT Result<BasisFactors> factorOntoBasis(const LogBasis& basis, const LogCoords& c);
 
 /// The nearest point of the subspace to c, with the residual; defined for rank-deficient
