@@ -5,10 +5,13 @@
 #include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
+#include "lct/PathTiming.h"
 #include "lct/RebuildOnce.h"
 #include "lct/ScrewMotion.h"
 
 #include "vtkCamera.h"
+#include "vtkDoubleArray.h"
+#include "vtkLCTPathTiming.h"
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
@@ -71,6 +74,8 @@ struct Key
   double Time;
   lct::CameraKey Camera;
   Eigen::Matrix4d CameraMatrix; ///< Hawkins & Grimm's P_b S V, for METHOD_CAMERA_MATRIX
+  /// Its own tension, continuity, bias and eases (lct/PathTiming.h).
+  lct::KeyTiming Timing;
 };
 
 const char* typeName(int type)
@@ -117,6 +122,9 @@ struct vtkCameraInterpolatorLCT::Internals
   lct::KeyLogs CameraMatrices{ lct::Parametrisation::MatrixLog };
   lct::Status CameraMatricesStatus = lct::Status::Ok;
   std::atomic<bool> ClampReported{ false };
+  /// The timing controls and the constant-speed table (eye and focal point: 6-D).
+  lct::PathTiming Timing;
+  vtkLCTPathTiming::ConstantSpeedTable<6> ConstantSpeedTable;
 
   /// The focal point of the screw motion of the focal frames (lct/ScrewMotion.h) about key r:
   /// f_r + R_r J(w) v with w = sum_j w_j log(R_r^T R_j), v = sum_j w_j J(w_j)^-1 R_r^T (f_j - f_r).
@@ -152,6 +160,99 @@ struct vtkCameraInterpolatorLCT::Internals
       ? about
       : Eigen::Vector3d((1.0 - h.share) * about +
           h.share * this->ScrewFocalPointAbout(orientations, w, w.key[h.second]));
+  }
+
+  /// The settings a curve point depends on.
+  struct Settings
+  {
+    int InterpolationType;
+    bool ConsistentRotation;
+    bool ScrewMotion;
+    int Method;
+  };
+
+  static Settings SettingsOf(const vtkCameraInterpolatorLCT* self)
+  {
+    return { self->InterpolationType, self->ConsistentRotation != 0, self->ScrewMotion != 0,
+      self->Method };
+  }
+
+  /// The curve weights at curve time t: the Spline type with the Kochanek-Bartels tangents where
+  /// a key has tension, continuity or bias (lct/PathTiming.h), else Catmull-Rom.
+  lct::CurveWeights WeightsAt(double t, int type) const
+  {
+    const int n = static_cast<int>(this->Keys.size());
+    const double* times = this->Keys.times().data();
+    const lct::CurveScheme scheme = toScheme(type);
+    if (scheme != lct::CurveScheme::CatmullRom || n < 2)
+    {
+      return lct::curveWeights(scheme, times, n, t);
+    }
+    return lct::curveWeights(scheme, times, n, t,
+      lct::splineTangents(
+        times, n, lct::curveSegment(times, n, t), this->Timing,
+        [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
+        [times, n](int k) { return lct::catmullRomTangent(times, n, k); }));
+  }
+
+  /// The camera at curve time t; false, with `why`, when it is not representable.
+  bool CameraAt(double t, const Settings& settings, lct::CameraParameters& out, std::string& why)
+  {
+    const lct::KeyLogs& orientations = this->OrientationLogs();
+    const lct::CurveWeights w = this->WeightsAt(t, settings.InterpolationType);
+    lct::CameraKey key;
+    const lct::Status status = settings.ConsistentRotation
+      ? orientations.combineAbsolute(w, key.focalFrame)
+      : orientations.combineRelative(w, key.focalFrame);
+    if (status != lct::Status::Ok)
+    {
+      why = lct::describe(status);
+      return false;
+    }
+    key.channels.setZero();
+    Eigen::Vector3d focalPoint = Eigen::Vector3d::Zero();
+    for (int j = 0; j < w.count; ++j)
+    {
+      const lct::CameraKey& k = this->Keys[w.key[j]].Camera;
+      key.channels += w.weight[j] * k.channels;
+      focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
+    }
+    if (settings.ScrewMotion && !settings.ConsistentRotation)
+    {
+      focalPoint = this->ScrewFocalPoint(orientations, w);
+    }
+    key.focalFrame.topRightCorner<3, 1>() = focalPoint;
+    key.parallelProjection = this->Keys[0].Camera.parallelProjection;
+    const char* cause = "";
+    const auto interpolated = lct::fromCameraKey(key, &cause);
+    if (!interpolated)
+    {
+      why = std::string(cause) + " (a spline overshoot between extreme keys?)";
+      return false;
+    }
+    out = interpolated.value;
+    if (settings.Method == METHOD_CAMERA_MATRIX)
+    {
+      const lct::KeyLogs& logs = this->CameraMatrixLogs();
+      Eigen::Matrix4d matrix;
+      lct::Status matrixStatus = this->CameraMatricesStatus;
+      if (matrixStatus == lct::Status::Ok)
+      {
+        matrixStatus = logs.combineRelative(w, matrix);
+      }
+      const auto fromMatrix = matrixStatus == lct::Status::Ok
+        ? lct::fromCameraMatrix(matrix, out)
+        : lct::Result<lct::CameraParameters>::failure(matrixStatus);
+      if (!fromMatrix)
+      {
+        // A missing log cannot be the cause (every key set under this method was checked): the
+        // combination's exp, or the decomposition of its result.
+        why = std::string("CameraMatrix method: ") + lct::describe(fromMatrix.status);
+        return false;
+      }
+      out = fromMatrix.value;
+    }
+    return true;
   }
 
   static Eigen::Matrix4d Orientation(const Key& key)
@@ -364,7 +465,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << "; key rejected.");
     return 0;
   }
-  const Key added{ t, key.value, lct::cameraMatrix(parameters.value) };
+  const Key added{ t, key.value, lct::cameraMatrix(parameters.value), {} };
   std::string missing;
   if (this->Method == METHOD_CAMERA_MATRIX &&
     !this->Internal->CheckCameraMatrices(t, &added, this->InterpolationType, missing))
@@ -463,66 +564,138 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
                     << ", " << lct::formatNumber(in.Keys.maximumTime())
                     << "]: clamped, as vtkCameraInterpolator does (reported once).");
   }
-  const lct::KeyLogs& orientations = in.OrientationLogs();
-  const lct::CurveWeights w =
-    lct::curveWeights(toScheme(this->InterpolationType), in.Keys.times().data(), n, t);
-  lct::CameraKey key;
-  const lct::Status status = this->ConsistentRotation
-    ? orientations.combineAbsolute(w, key.focalFrame)
-    : orientations.combineRelative(w, key.focalFrame);
-  if (status != lct::Status::Ok)
+  double curveTime = t;
+  if (!this->CurveTime(t, curveTime, "InterpolateCamera"))
   {
-    vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "): " << lct::describe(status)
+    return 0;
+  }
+  lct::CameraParameters result;
+  std::string why;
+  if (!in.CameraAt(curveTime, Internals::SettingsOf(this), result, why))
+  {
+    vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "): " << why
                   << "; camera unchanged.");
     return 0;
   }
-  key.channels.setZero();
-  Eigen::Vector3d focalPoint = Eigen::Vector3d::Zero();
-  for (int j = 0; j < w.count; ++j)
-  {
-    const lct::CameraKey& k = in.Keys[w.key[j]].Camera;
-    key.channels += w.weight[j] * k.channels;
-    focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
-  }
-  if (this->ScrewMotion && !this->ConsistentRotation)
-  {
-    focalPoint = in.ScrewFocalPoint(orientations, w);
-  }
-  key.focalFrame.topRightCorner<3, 1>() = focalPoint;
-  key.parallelProjection = in.Keys[0].Camera.parallelProjection;
-  const char* why = "";
-  const auto interpolated = lct::fromCameraKey(key, &why);
-  if (!interpolated)
-  {
-    vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "): " << why
-                  << " (a spline overshoot between extreme keys?); camera unchanged.");
-    return 0;
-  }
-  lct::CameraParameters result = interpolated.value;
-  if (this->Method == METHOD_CAMERA_MATRIX)
-  {
-    const lct::KeyLogs& logs = in.CameraMatrixLogs();
-    Eigen::Matrix4d matrix;
-    lct::Status matrixStatus = in.CameraMatricesStatus;
-    if (matrixStatus == lct::Status::Ok)
-    {
-      matrixStatus = logs.combineRelative(w, matrix);
-    }
-    const auto fromMatrix = matrixStatus == lct::Status::Ok
-      ? lct::fromCameraMatrix(matrix, result)
-      : lct::Result<lct::CameraParameters>::failure(matrixStatus);
-    if (!fromMatrix)
-    {
-      // A missing log cannot be the cause (every key set under this method was checked): the
-      // combination's exp, or the decomposition of its result.
-      vtkErrorMacro(<< "InterpolateCamera(" << lct::formatNumber(t) << "), CameraMatrix method: "
-                    << lct::describe(fromMatrix.status) << "; camera unchanged.");
-      return 0;
-    }
-    result = fromMatrix.value;
-  }
   toVtk(result, camera);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraInterpolatorLCT::CurveTime(double t, double& curveTime, const char* caller)
+{
+  Internals& in = *this->Internal;
+  const int n = static_cast<int>(in.Keys.size());
+  in.OrientationLogs(); // flattens the keys
+  if (!this->ConstantSpeed || n < 2)
+  {
+    curveTime = n < 2 ? t : vtkLCTPathTiming::EasedCurveTime(in.Keys, in.Timing, t);
+    return true;
+  }
+  const Internals::Settings settings = Internals::SettingsOf(this);
+  const int measure = this->ConstantSpeedMeasure;
+  const auto positionAt = [&](double tau, Eigen::Matrix<double, 6, 1>& p) {
+    lct::CameraParameters camera;
+    std::string ignored;
+    if (!in.CameraAt(tau, settings, camera, ignored))
+    {
+      return false;
+    }
+    p.head<3>() = measure == CONSTANT_SPEED_FOCAL_POINT ? Eigen::Vector3d::Zero() : camera.position;
+    p.tail<3>() = measure == CONSTANT_SPEED_EYE ? Eigen::Vector3d::Zero() : camera.focalPoint;
+    return true;
+  };
+  return in.ConstantSpeedTable.CurveTime(
+    this, caller, this->GetMTime(), in.Keys.times().data(), n, in.Timing, t, positionAt, curveTime);
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::GetKeyArrivalTimes(vtkDoubleArray* arrivals)
+{
+  Internals& in = *this->Internal;
+  const int n = static_cast<int>(in.Keys.size());
+  if (!arrivals || n == 0)
+  {
+    vtkErrorMacro(<< "GetKeyArrivalTimes: " << (arrivals ? "no keys" : "null array")
+                  << "; nothing written.");
+    return 0;
+  }
+  in.OrientationLogs(); // flattens the keys
+  if (!this->ConstantSpeed || n < 2)
+  {
+    vtkLCTPathTiming::KeyTimes(in.Keys.times(), arrivals);
+    return 1;
+  }
+  double ignored;
+  if (!this->CurveTime(in.Keys.minimumTime(), ignored, "GetKeyArrivalTimes"))
+  {
+    return 0; // CurveTime reported why
+  }
+  in.ConstantSpeedTable.ArrivalTimes(n, arrivals); // built for this MTime by CurveTime
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::SetTension(double tension)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Tension, tension);
+}
+int vtkCameraInterpolatorLCT::SetContinuity(double continuity)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Continuity, continuity);
+}
+int vtkCameraInterpolatorLCT::SetBias(double bias)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Bias, bias);
+}
+int vtkCameraInterpolatorLCT::SetEaseIn(double ease)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::EaseIn, ease);
+}
+int vtkCameraInterpolatorLCT::SetEaseOut(double ease)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::EaseOut, ease);
+}
+double vtkCameraInterpolatorLCT::GetTension()
+{
+  return this->Internal->Timing.tensionContinuityBias.tension;
+}
+double vtkCameraInterpolatorLCT::GetContinuity()
+{
+  return this->Internal->Timing.tensionContinuityBias.continuity;
+}
+double vtkCameraInterpolatorLCT::GetBias()
+{
+  return this->Internal->Timing.tensionContinuityBias.bias;
+}
+double vtkCameraInterpolatorLCT::GetEaseIn()
+{
+  return this->Internal->Timing.easeIn;
+}
+double vtkCameraInterpolatorLCT::GetEaseOut()
+{
+  return this->Internal->Timing.easeOut;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::SetKeyTensionContinuityBias(
+  double t, double tension, double continuity, double bias)
+{
+  return vtkLCTPathTiming::SetKeyTensionContinuityBias(
+    this, this->Internal->Keys, t, { tension, continuity, bias });
+}
+int vtkCameraInterpolatorLCT::SetKeyEase(double t, double arriving, double leaving)
+{
+  return vtkLCTPathTiming::SetKeyEase(this, this->Internal->Keys, t, arriving, leaving);
+}
+int vtkCameraInterpolatorLCT::ClearKeyTiming(double t)
+{
+  return vtkLCTPathTiming::ClearKeyTiming(this, this->Internal->Keys, t);
 }
 
 //------------------------------------------------------------------------------
@@ -535,6 +708,9 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScrewMotion: " << (this->ScrewMotion ? "On" : "Off") << "\n";
   os << indent << "Method: " << (this->Method == METHOD_FOCAL_FRAME ? "FocalFrame" : "CameraMatrix")
      << "\n";
+  vtkLCTPathTiming::Print(os, indent, this->Internal->Timing, this->ConstantSpeed);
+  static const char* const measures[] = { "EyeAndFocalPoint", "Eye", "FocalPoint" };
+  os << indent << "ConstantSpeedMeasure: " << measures[this->ConstantSpeedMeasure] << "\n";
   os << indent << "NumberOfCameras: " << this->GetNumberOfCameras() << "\n";
   if (!this->Internal->Keys.empty())
   {

@@ -54,6 +54,7 @@
 #include "vtkObject.h"
 
 class vtkCamera;
+class vtkDoubleArray;
 
 class VTKLCT_EXPORT vtkCameraInterpolatorLCT : public vtkObject
 {
@@ -192,6 +193,77 @@ public:
   vtkBooleanMacro(ScrewMotion, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Kochanek-Bartels tension, continuity and bias of the Spline type for every key without its
+   * own, each in [-1, 1] (else an error, 0 returned, unchanged); applied to the log steps of the
+   * focal frame and to the channels alike (lct/KochanekBartels.h). All 0 (default) is
+   * Catmull-Rom. Keys are reproduced at their times whatever the values.
+   */
+  int SetTension(double tension);
+  int SetContinuity(double continuity);
+  int SetBias(double bias);
+  double GetTension();
+  double GetContinuity();
+  double GetBias();
+  ///@}
+
+  ///@{
+  /**
+   * Ease of the whole path: EaseIn makes it start slowly (from rest at 1), EaseOut end slowly
+   * (to rest at 1), each in [0, 1] (else an error, 0 returned, unchanged). Without ConstantSpeed
+   * they act on the first and the last key segment; with it, on the whole path.
+   */
+  int SetEaseIn(double ease);
+  int SetEaseOut(double ease);
+  double GetEaseIn();
+  double GetEaseOut();
+  ///@}
+
+  /**
+   * Timing of the key at time t: its own tension, continuity and bias (Spline type) and the
+   * eases of the motion arriving at it and leaving it, each in [0, 1] (the camera's speed there
+   * is multiplied by 1 - ease; lct/Ease.h); the key is still reached at its time. Kept until
+   * the key is replaced or removed, or ClearKeyTiming(t). Returns 0, with an error and nothing
+   * changed, when there is no key at t or a value is out of range.
+   */
+  int SetKeyTensionContinuityBias(double t, double tension, double continuity, double bias);
+  int SetKeyEase(double t, double arriving, double leaving);
+  int ClearKeyTiming(double t);
+
+  enum ConstantSpeedMeasures
+  {
+    CONSTANT_SPEED_EYE_AND_FOCAL_POINT = 0,
+    CONSTANT_SPEED_EYE = 1,
+    CONSTANT_SPEED_FOCAL_POINT = 2
+  };
+
+  ///@{
+  /**
+   * Constant speed (default off): reparametrise time by the arc length of the camera's path, so
+   * that it moves evenly whatever the key spacing (lct/ArcLength.h). The measure: the eye and
+   * the focal point together (default: the length of the path of the pair (eye, focal point)
+   * in R^6, so a pan about a fixed eye and a dolly with a fixed focal point both count), the
+   * eye alone, or the focal point alone. The path is the same; the keys are passed at the times
+   * their distance along it gives (GetKeyArrivalTimes), the first at GetMinimumT() and the last
+   * at GetMaximumT(); per-key eases do not apply, EaseIn/EaseOut ease the whole path; stretches
+   * in which the measured points stay still (a roll, a zoom) keep their duration.
+   */
+  vtkSetMacro(ConstantSpeed, vtkTypeBool);
+  vtkGetMacro(ConstantSpeed, vtkTypeBool);
+  vtkBooleanMacro(ConstantSpeed, vtkTypeBool);
+  vtkSetClampMacro(
+    ConstantSpeedMeasure, int, CONSTANT_SPEED_EYE_AND_FOCAL_POINT, CONSTANT_SPEED_FOCAL_POINT);
+  vtkGetMacro(ConstantSpeedMeasure, int);
+  ///@}
+
+  /**
+   * The times at which the interpolated path passes each key, in key order: the key times,
+   * except under ConstantSpeed. Returns 0 (with an error, `times` untouched) for a null array,
+   * no keys, or a path that cannot be measured.
+   */
+  int GetKeyArrivalTimes(vtkDoubleArray* times);
+
 protected:
   vtkCameraInterpolatorLCT();
   ~vtkCameraInterpolatorLCT() override;
@@ -200,10 +272,16 @@ protected:
   vtkTypeBool ConsistentRotation = false;
   int Method = METHOD_FOCAL_FRAME;
   vtkTypeBool ScrewMotion = true;
+  vtkTypeBool ConstantSpeed = false;
+  int ConstantSpeedMeasure = CONSTANT_SPEED_EYE_AND_FOCAL_POINT;
 
 private:
   vtkCameraInterpolatorLCT(const vtkCameraInterpolatorLCT&) = delete;
   void operator=(const vtkCameraInterpolatorLCT&) = delete;
+
+  /// The curve time of output time t (eases, constant speed); false, with an error, when the
+  /// constant-speed path cannot be measured.
+  bool CurveTime(double t, double& curveTime, const char* caller);
 
   struct Internals;
   Internals* Internal;

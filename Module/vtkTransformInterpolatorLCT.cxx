@@ -7,9 +7,12 @@
 #include "lct/Keyframes.h"
 #include "lct/MonotoneTangents.h"
 #include "lct/Parametrisation.h"
+#include "lct/PathTiming.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/RebuildOnce.h"
 
+#include "vtkDoubleArray.h"
+#include "vtkLCTPathTiming.h"
 #include "vtkLogTransform.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -39,6 +42,8 @@ struct Key
   bool HasOutgoing = false;
   Eigen::Matrix4d Incoming;
   Eigen::Matrix4d Outgoing;
+  /// Its own tension, continuity, bias and eases (lct/PathTiming.h).
+  lct::KeyTiming Timing;
 };
 
 lct::Parametrisation toCore(int parametrisation)
@@ -168,6 +173,10 @@ struct vtkTransformInterpolatorLCT::Internals
   double BezierFailedTime = 0.0;
   /// Whether a query outside the key range has been reported (once per interpolator).
   std::atomic<bool> ClampReported{ false };
+  /// The timing controls, the point whose speed ConstantSpeed makes even, and its table.
+  lct::PathTiming Timing;
+  Eigen::Vector3d ConstantSpeedPoint = Eigen::Vector3d::Zero();
+  vtkLCTPathTiming::ConstantSpeedTable<3> ConstantSpeedTable;
 
   /// The logs the key logs must hold for curve points of `type`: Bezier takes the steps between
   /// neighbours both ways (the tangents of its automatic controls; its own sequence is checked
@@ -211,21 +220,37 @@ struct vtkTransformInterpolatorLCT::Internals
     return matrices;
   }
 
-  /// The monotone tangents at the keys of the segment holding t (lct/MonotoneTangents.h), from
-  /// the steps to each key's neighbours in its own frame; the end keys keep their one-sided
-  /// tangents (the secant).
-  static lct::SegmentTangents TangentsAt(
-    const lct::KeyLogs& logs, const double* times, int n, double t)
+  /// The Spline tangents of the segment holding t: Kochanek-Bartels at keys with tension,
+  /// continuity or bias (lct/PathTiming.h), else the monotone tangent (lct/MonotoneTangents.h)
+  /// from the steps to the key's neighbours in its own frame, or Catmull-Rom's when `monotone`
+  /// is off; the end keys keep their one-sided tangents (the secant).
+  lct::SegmentTangents TangentsAt(
+    const lct::KeyLogs& logs, const double* times, int n, double t, bool monotone) const
   {
-    const auto tangentOf = [&](int k) {
-      const lct::LogCoords* previous = k > 0 ? logs.relative(k - 1, k) : nullptr;
-      const lct::LogCoords* next = k + 1 < n ? logs.relative(k + 1, k) : nullptr;
+    const auto defaultTangent = [&](int k) {
+      const lct::LogCoords* previous = monotone && k > 0 ? logs.relative(k - 1, k) : nullptr;
+      const lct::LogCoords* next = monotone && k + 1 < n ? logs.relative(k + 1, k) : nullptr;
       return previous && next
         ? lct::monotoneTangent(*previous, *next, times[k] - times[k - 1], times[k + 1] - times[k])
         : lct::catmullRomTangent(times, n, k);
     };
-    const int i = lct::curveSegment(times, n, t);
-    return { tangentOf(i), tangentOf(i + 1) };
+    return lct::splineTangents(
+      times, n, lct::curveSegment(times, n, t), this->Timing,
+      [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; }, defaultTangent);
+  }
+
+  /// The curve point at curve time t: the weights of `scheme` (Spline with TangentsAt), combined
+  /// relative to the key of largest weight or, with `absolute`, from the absolute logs.
+  lct::Status CurveAt(const lct::KeyLogs& logs, lct::CurveScheme scheme, bool monotone,
+    bool absolute, double t, Eigen::Matrix4d& result, lct::MissingLog* missing) const
+  {
+    const int n = static_cast<int>(this->Keys.size());
+    const double* times = this->Keys.times().data();
+    const lct::CurveWeights w = scheme == lct::CurveScheme::CatmullRom && n > 1
+      ? lct::curveWeights(scheme, times, n, t, this->TangentsAt(logs, times, n, t, monotone))
+      : lct::curveWeights(scheme, times, n, t);
+    return absolute ? logs.combineAbsolute(w, result, missing)
+                    : logs.combineRelative(w, result, missing);
   }
 
   /// The key logs, rebuilt if stale. Null, with LogsStatus saying why, when they cannot be.
@@ -845,14 +870,15 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
                   << "; output unchanged.");
     return false;
   }
-  const double* times = in.Keys.times().data();
-  const lct::CurveWeights w = scheme == lct::CurveScheme::CatmullRom && this->MonotoneTangents
-    ? lct::curveWeights(scheme, times, n, t, Internals::TangentsAt(*logs, times, n, t))
-    : lct::curveWeights(scheme, times, n, t);
+  double curveTime = t;
+  if (!this->CurveTime(t, curveTime, "InterpolateTransform"))
+  {
+    return false;
+  }
   Eigen::Matrix4d result;
   lct::MissingLog missing;
-  const lct::Status status = this->ConsistentRotation ? logs->combineAbsolute(w, result, &missing)
-                                                      : logs->combineRelative(w, result, &missing);
+  const lct::Status status = in.CurveAt(
+    *logs, scheme, this->MonotoneTangents, this->ConsistentRotation, curveTime, result, &missing);
   if (missing.missing())
   {
     // Every edit and setting checks the logs its curve points combine, so this is a defect.
@@ -877,6 +903,147 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
   Eigen::Map<RowMajor4> output(out);
   output = result;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransformInterpolatorLCT::CurveTime(double t, double& curveTime, const char* caller)
+{
+  Internals& in = *this->Internal;
+  const int n = static_cast<int>(in.Keys.size());
+  if (!this->ConstantSpeed || n < 2)
+  {
+    curveTime = n < 2 ? t : vtkLCTPathTiming::EasedCurveTime(in.Keys, in.Timing, t);
+    return true;
+  }
+  const lct::CurveScheme scheme = toScheme(this->InterpolationType);
+  const lct::KeyLogs* logs = scheme == lct::CurveScheme::Bezier ? in.Bezier() : in.Logs();
+  const auto positionAt = [&](double tau, Eigen::Vector3d& p) {
+    Eigen::Matrix4d m;
+    if (!logs ||
+      in.CurveAt(*logs, scheme, this->MonotoneTangents, this->ConsistentRotation, tau, m,
+        nullptr) != lct::Status::Ok)
+    {
+      return false;
+    }
+    p = m.topLeftCorner<3, 3>() * in.ConstantSpeedPoint + m.topRightCorner<3, 1>();
+    return true;
+  };
+  return in.ConstantSpeedTable.CurveTime(
+    this, caller, this->GetMTime(), in.Keys.times().data(), n, in.Timing, t, positionAt, curveTime);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::GetKeyArrivalTimes(vtkDoubleArray* arrivals)
+{
+  Internals& in = *this->Internal;
+  const int n = static_cast<int>(in.Keys.size());
+  if (!arrivals || n == 0)
+  {
+    vtkErrorMacro(<< "GetKeyArrivalTimes: " << (arrivals ? "no keys" : "null array")
+                  << "; nothing written.");
+    return 0;
+  }
+  in.Keys.flatten();
+  if (!this->ConstantSpeed || n < 2)
+  {
+    vtkLCTPathTiming::KeyTimes(in.Keys.times(), arrivals);
+    return 1;
+  }
+  double ignored;
+  if (!this->CurveTime(in.Keys.minimumTime(), ignored, "GetKeyArrivalTimes"))
+  {
+    return 0; // CurveTime reported why
+  }
+  in.ConstantSpeedTable.ArrivalTimes(n, arrivals); // built for this MTime by CurveTime
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetTension(double tension)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Tension, tension);
+}
+int vtkTransformInterpolatorLCT::SetContinuity(double continuity)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Continuity, continuity);
+}
+int vtkTransformInterpolatorLCT::SetBias(double bias)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::Bias, bias);
+}
+int vtkTransformInterpolatorLCT::SetEaseIn(double ease)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::EaseIn, ease);
+}
+int vtkTransformInterpolatorLCT::SetEaseOut(double ease)
+{
+  return vtkLCTPathTiming::SetPathTiming(
+    this, this->Internal->Timing, vtkLCTPathTiming::Setting::EaseOut, ease);
+}
+double vtkTransformInterpolatorLCT::GetTension()
+{
+  return this->Internal->Timing.tensionContinuityBias.tension;
+}
+double vtkTransformInterpolatorLCT::GetContinuity()
+{
+  return this->Internal->Timing.tensionContinuityBias.continuity;
+}
+double vtkTransformInterpolatorLCT::GetBias()
+{
+  return this->Internal->Timing.tensionContinuityBias.bias;
+}
+double vtkTransformInterpolatorLCT::GetEaseIn()
+{
+  return this->Internal->Timing.easeIn;
+}
+double vtkTransformInterpolatorLCT::GetEaseOut()
+{
+  return this->Internal->Timing.easeOut;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetKeyTensionContinuityBias(
+  double t, double tension, double continuity, double bias)
+{
+  return vtkLCTPathTiming::SetKeyTensionContinuityBias(
+    this, this->Internal->Keys, t, { tension, continuity, bias });
+}
+int vtkTransformInterpolatorLCT::SetKeyEase(double t, double arriving, double leaving)
+{
+  return vtkLCTPathTiming::SetKeyEase(this, this->Internal->Keys, t, arriving, leaving);
+}
+int vtkTransformInterpolatorLCT::ClearKeyTiming(double t)
+{
+  return vtkLCTPathTiming::ClearKeyTiming(this, this->Internal->Keys, t);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformInterpolatorLCT::SetConstantSpeedPoint(double x, double y, double z)
+{
+  const Eigen::Vector3d point(x, y, z);
+  if (!point.allFinite())
+  {
+    vtkErrorMacro(<< "SetConstantSpeedPoint(" << lct::formatNumber(x) << ", "
+                  << lct::formatNumber(y) << ", " << lct::formatNumber(z)
+                  << "): the point is not finite; unchanged.");
+    return 0;
+  }
+  if (point != this->Internal->ConstantSpeedPoint)
+  {
+    this->Internal->ConstantSpeedPoint = point;
+    this->Modified();
+  }
+  return 1;
+}
+
+void vtkTransformInterpolatorLCT::GetConstantSpeedPoint(double point[3])
+{
+  Eigen::Map<Eigen::Vector3d> out(point);
+  out = this->Internal->ConstantSpeedPoint;
 }
 
 //------------------------------------------------------------------------------
@@ -923,6 +1090,10 @@ void vtkTransformInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Parametrisation: " << lct::name(toCore(this->Parametrisation)) << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
   os << indent << "MonotoneTangents: " << (this->MonotoneTangents ? "On" : "Off") << "\n";
+  vtkLCTPathTiming::Print(os, indent, this->Internal->Timing, this->ConstantSpeed);
+  const Eigen::Vector3d& point = this->Internal->ConstantSpeedPoint;
+  os << indent << "ConstantSpeedPoint: (" << point.x() << ", " << point.y() << ", " << point.z()
+     << ")\n";
   os << indent << "NumberOfTransforms: " << this->GetNumberOfTransforms() << "\n";
   if (!this->Internal->Keys.empty())
   {

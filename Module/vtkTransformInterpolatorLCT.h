@@ -72,6 +72,7 @@
 #include "vtkLCTModule.h" // For export macro
 #include "vtkObject.h"
 
+class vtkDoubleArray;
 class vtkLogTransform;
 class vtkMatrix4x4;
 class vtkProp3D;
@@ -235,6 +236,77 @@ public:
   vtkBooleanMacro(MonotoneTangents, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Kochanek-Bartels tension, continuity and bias of the Spline type (vtkKochanekSpline's
+   * parameters, applied to the log steps between keys; lct/KochanekBartels.h) for every key
+   * without its own (SetKeyTensionContinuityBias). Each in [-1, 1]; a value outside (or NaN) is
+   * refused with an error, returning 0 and keeping the old one. All 0 (default): the key's
+   * tangent is the monotone one (or Catmull-Rom's with MonotoneTangentsOff), and TCB = 0 with
+   * MonotoneTangentsOff is exactly Catmull-Rom. Keys are reproduced at their times whatever the
+   * values; continuity != 0 puts a corner at the keys.
+   */
+  int SetTension(double tension);
+  int SetContinuity(double continuity);
+  int SetBias(double bias);
+  double GetTension();
+  double GetContinuity();
+  double GetBias();
+  ///@}
+
+  ///@{
+  /**
+   * Ease of the whole path: EaseIn makes it start slowly (from rest at 1), EaseOut end slowly
+   * (to rest at 1), each in [0, 1] (else an error, 0 returned, unchanged). Without ConstantSpeed
+   * they act on the first and the last key segment; with it, on the whole path.
+   */
+  int SetEaseIn(double ease);
+  int SetEaseOut(double ease);
+  double GetEaseIn();
+  double GetEaseOut();
+  ///@}
+
+  /**
+   * Timing of the key at time t: its own tension, continuity and bias (Spline type), and the
+   * eases of the motion arriving at it and leaving it (each in [0, 1]: the speed there is
+   * multiplied by 1 - ease, so 1 arrives at or leaves from rest; lct/Ease.h). The key is still
+   * reached at its time t. Kept until the key is replaced or removed, or ClearKeyTiming(t).
+   * Returns 0, with an error and nothing changed, when there is no key at t or a value is out
+   * of range.
+   */
+  int SetKeyTensionContinuityBias(double t, double tension, double continuity, double bias);
+  int SetKeyEase(double t, double arriving, double leaving);
+  int ClearKeyTiming(double t);
+
+  ///@{
+  /**
+   * Constant speed (default off): reparametrise time by the arc length of the path of one point
+   * moved by the interpolated transforms, the ConstantSpeedPoint (default the origin, i.e. the
+   * transform's translation), so that it moves evenly along the path whatever the key spacing
+   * (lct/ArcLength.h). The path is the same; the keys are then passed at the times their
+   * distance along it gives (GetKeyArrivalTimes), the first at GetMinimumT() and the last at
+   * GetMaximumT(); per-key eases do not apply, EaseIn/EaseOut ease the whole path. Stretches in
+   * which the point stays still (a turn about it) keep their duration. The table is built by the
+   * first InterpolateTransform after a change (n key segments: 32 n evaluations).
+   */
+  vtkSetMacro(ConstantSpeed, vtkTypeBool);
+  vtkGetMacro(ConstantSpeed, vtkTypeBool);
+  vtkBooleanMacro(ConstantSpeed, vtkTypeBool);
+  int SetConstantSpeedPoint(double x, double y, double z);
+  int SetConstantSpeedPoint(const double point[3])
+  {
+    return this->SetConstantSpeedPoint(point[0], point[1], point[2]);
+  }
+  void GetConstantSpeedPoint(double point[3]);
+  ///@}
+
+  /**
+   * The times at which the interpolated path passes each key, in key order: the key times,
+   * except under ConstantSpeed. Returns 0 (with an error, `times` untouched) for a null array,
+   * no keys, or a path that cannot be measured.
+   */
+  int GetKeyArrivalTimes(vtkDoubleArray* times);
+
 protected:
   vtkTransformInterpolatorLCT();
   ~vtkTransformInterpolatorLCT() override;
@@ -243,6 +315,7 @@ protected:
   int Parametrisation = POLAR;
   vtkTypeBool ConsistentRotation = false;
   vtkTypeBool MonotoneTangents = true;
+  vtkTypeBool ConstantSpeed = false;
 
 private:
   vtkTransformInterpolatorLCT(const vtkTransformInterpolatorLCT&) = delete;
@@ -250,6 +323,9 @@ private:
 
   int AddKey(double t, const double elements[16], const char* caller);
   bool Evaluate(double t, double out[16]);
+  /// The curve time of output time t (eases, constant speed); false, with an error, when the
+  /// constant-speed path cannot be measured.
+  bool CurveTime(double t, double& curveTime, const char* caller);
 
   struct Internals;
   Internals* Internal;
