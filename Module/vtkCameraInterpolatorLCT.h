@@ -37,10 +37,18 @@
  * finite t is clamped to [GetMinimumT(), GetMaximumT()] as in VTK, with one vtkWarningMacro per
  * interpolator so the clamp is not silent.
  *
+ * Timing (issue #12 §3; lct/PathTiming.h): Kochanek-Bartels tension, continuity and bias of the
+ * Spline type per path or per key, eases per key or at the path's ends (keys keep their
+ * times), and ConstantSpeed, which reparametrises time by arc length so that the path is
+ * travelled evenly (keys are then passed at the times GetKeyArrivalTimes gives). The curve
+ * is the same; only when each of its points is reached, and with TCB its tangents, change.
+ *
  * Concurrency: once the keys and settings no longer change, InterpolateCamera may be called from
  * several threads at once on one interpolator, each with its own output camera (the key logs
- * rebuilt lazily are built once, under a mutex; Testing/Unit/TestConcurrency.cxx, run under
- * ThreadSanitizer). Changing keys or settings while another thread interpolates is a data race.
+ * and the constant-speed table, rebuilt lazily, are built once, under a mutex;
+ * Testing/Unit/TestConcurrency.cxx, run under ThreadSanitizer). Changing keys or settings (the
+ * timing ones included) or calling GetKeyArrivalTimes while another thread interpolates is a
+ * data race.
  *
  * @warning Derives from vtkObject, not from vtkCameraInterpolator: VTK 9.1 declares that class's
  * methods non-virtual, so a subclass would be silently bypassed through a base pointer.

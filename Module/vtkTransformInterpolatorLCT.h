@@ -54,11 +54,18 @@
  * not representable (e.g. a spline overshoot that overflows, or an in-between beyond the
  * conditioning limit): no NaN or Inf is ever written.
  *
+ * Timing (issue #12 §3; lct/PathTiming.h): Kochanek-Bartels tension, continuity and bias of the
+ * Spline type per path or per key, eases per key or at the path's ends (keys keep their
+ * times), and ConstantSpeed, which reparametrises time by arc length so that the path is
+ * travelled evenly (keys are then passed at the times GetKeyArrivalTimes gives). The curve
+ * is the same; only when each of its points is reached, and with TCB its tangents, change.
+ *
  * Concurrency: once the keys and the settings no longer change, InterpolateTransform may be
  * called from several threads at once on one interpolator, each thread with its own output
- * object (the key logs rebuilt lazily are built once, under a mutex; the check is
- * Testing/Unit/TestConcurrency.cxx, run under ThreadSanitizer). Adding or removing keys, or
- * changing a setting, while another thread interpolates is a data race.
+ * object (the key logs and the constant-speed table, rebuilt lazily, are built once, under a
+ * mutex; the checks are Testing/Unit/TestConcurrency.cxx and TestTimingControls.cxx, run under
+ * ThreadSanitizer). Adding or removing keys, changing a setting (the timing ones included) or
+ * calling GetKeyArrivalTimes while another thread interpolates is a data race.
  *
  * @warning This class derives from vtkObject, not from vtkTransformInterpolator: VTK 9.1 declares
  * that class's methods non-virtual, so a subclass would be silently bypassed through a base

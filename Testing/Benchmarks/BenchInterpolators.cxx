@@ -1,6 +1,7 @@
-// ns per InterpolateTransform of vtkTransformInterpolatorLCT (every scheme) against VTK's
-// vtkTransformInterpolator (linear and its default spline), on the same keys and times in one
-// run, for 2, 10 and 100 keys. Prints Google Benchmark's table and the ratios.
+// ns per InterpolateTransform of vtkTransformInterpolatorLCT (every scheme, and the Spline with
+// each timing control of issue #12 §3) against VTK's vtkTransformInterpolator (linear and its
+// default spline), on the same keys and times in one run, for 2, 10 and 100 keys; and the cost
+// of building the constant-speed table. Prints Google Benchmark's table and the ratios.
 #include "vtkTransformInterpolatorLCT.h"
 
 #include "../Unit/RandomTransforms.h"
@@ -89,6 +90,67 @@ void Ours(benchmark::State& state, int type)
   }
 }
 
+/// The Spline with one timing control (issue #12 §3): Kochanek-Bartels parameters on every key,
+/// eases on every key, or constant speed (its table built before the loop).
+enum class Timing
+{
+  TensionContinuityBias,
+  Ease,
+  ConstantSpeed
+};
+
+void OursTimed(benchmark::State& state, Timing timing)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkTransformInterpolatorLCT> interpolator;
+  addKeys(n, interpolator, nullptr);
+  switch (timing)
+  {
+    case Timing::TensionContinuityBias:
+      interpolator->SetTension(0.3);
+      interpolator->SetContinuity(-0.2);
+      interpolator->SetBias(0.1);
+      break;
+    case Timing::Ease:
+      for (int k = 0; k < n; ++k)
+      {
+        interpolator->SetKeyEase(k, 0.5, 0.5);
+      }
+      break;
+    case Timing::ConstantSpeed:
+      interpolator->ConstantSpeedOn();
+      break;
+  }
+  const std::vector<double> t = queries(n);
+  vtkNew<vtkTransform> out;
+  interpolator->InterpolateTransform(t[0], out); // builds the logs (and the table)
+  int i = 0;
+  for (auto _ : state)
+  {
+    interpolator->InterpolateTransform(t[i], out);
+    consume(out);
+    i = (i + 1) & (kQueries - 1);
+  }
+}
+
+/// The first InterpolateTransform after a change with ConstantSpeed on: the table's build (about
+/// 16 n curve points, more where the path curves) plus one query.
+void ConstantSpeedTable(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  vtkNew<vtkTransformInterpolatorLCT> interpolator;
+  addKeys(n, interpolator, nullptr);
+  interpolator->ConstantSpeedOn();
+  vtkNew<vtkTransform> out;
+  interpolator->InterpolateTransform(0.5, out); // the key logs, built once
+  for (auto _ : state)
+  {
+    interpolator->Modified(); // stales the table only
+    interpolator->InterpolateTransform(0.5, out);
+    consume(out);
+  }
+}
+
 void Vtk(benchmark::State& state, int type)
 {
   const int n = static_cast<int>(state.range(0));
@@ -127,6 +189,18 @@ void Ours_Spline_ToMatrix(benchmark::State& s)
 {
   Ours<vtkMatrix4x4>(s, vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
 }
+void Ours_Spline_TCB(benchmark::State& s)
+{
+  OursTimed(s, Timing::TensionContinuityBias);
+}
+void Ours_Spline_Eased(benchmark::State& s)
+{
+  OursTimed(s, Timing::Ease);
+}
+void Ours_Spline_ConstantSpeed(benchmark::State& s)
+{
+  OursTimed(s, Timing::ConstantSpeed);
+}
 void Vtk_Linear(benchmark::State& s)
 {
   Vtk(s, vtkTransformInterpolator::INTERPOLATION_TYPE_LINEAR);
@@ -141,6 +215,10 @@ BENCHMARK(Ours_Spline)->Arg(2)->Arg(10)->Arg(100);
 BENCHMARK(Ours_BSpline)->Arg(2)->Arg(10)->Arg(100);
 BENCHMARK(Ours_Subdivision)->Arg(2)->Arg(10)->Arg(100);
 BENCHMARK(Ours_Spline_ToMatrix)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Spline_TCB)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Spline_Eased)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(Ours_Spline_ConstantSpeed)->Arg(2)->Arg(10)->Arg(100);
+BENCHMARK(ConstantSpeedTable)->Arg(2)->Arg(10)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Vtk_Linear)->Arg(2)->Arg(10)->Arg(100);
 BENCHMARK(Vtk_Spline)->Arg(2)->Arg(10)->Arg(100);
 } // namespace
@@ -175,6 +253,22 @@ int main(int argc, char** argv)
         std::printf("  %-6d %-12s %10.1f %10s\n", n, scheme, ours, "-");
       }
     }
+  }
+  std::printf("\nTiming controls (issue #12 §3), Spline, ns per call, against VTK's spline in "
+              "this run; constant-speed table build in us:\n");
+  std::printf("  %-6s %10s %10s %10s %10s %10s %12s\n", "keys", "plain", "TCB", "eased",
+    "const.sp.", "VTK", "table us");
+  for (int n : { 2, 10, 100 })
+  {
+    const std::string k = "/" + std::to_string(n);
+    const double vtk = reporter.Get("Vtk_Spline" + k);
+    const auto ratio = [&](const std::string& name) {
+      const double ours = reporter.Get(name + k);
+      return vtk > 0.0 && ours > 0.0 ? ours / vtk : 0.0;
+    };
+    std::printf("  %-6d %9.2fx %9.2fx %9.2fx %9.2fx %10.1f %12.1f\n", n, ratio("Ours_Spline"),
+      ratio("Ours_Spline_TCB"), ratio("Ours_Spline_Eased"), ratio("Ours_Spline_ConstantSpeed"), vtk,
+      reporter.Get("ConstantSpeedTable" + k)); // in its own unit, us
   }
   benchmark::Shutdown();
   return 0;

@@ -618,3 +618,37 @@ TEST(TimingControls, OneKeyWithEveryTimingControlIsThatKey)
   ASSERT_EQ(camera->GetKeyArrivalTimes(arrivals), 1);
   EXPECT_EQ(arrivals->GetValue(0), 0.0);
 }
+
+TEST(Concurrency, CameraConstantSpeedTableIsBuiltOnceAcrossThreads)
+{
+  const auto fill = [](vtkCameraInterpolatorLCT* path) {
+    addDolly(path, { 0, 0.5, 3, 3.2, 6 }, { 0, 8, 9, 30, 31 }, 25.0);
+    path->ConstantSpeedOn();
+  };
+  vtkNew<vtkCameraInterpolatorLCT> shared, serialPath;
+  fill(shared);
+  fill(serialPath);
+  std::vector<Eigen::VectorXd> serial(48), parallel(48);
+  for (int j = 0; j < 48; ++j)
+  {
+    serial[j] = eyeAndFocalPoint(serialPath, 6.0 * j / 47);
+  }
+  std::vector<std::thread> threads;
+  for (int thread = 0; thread < 4; ++thread)
+  {
+    threads.emplace_back([&, thread] {
+      for (int j = thread; j < 48; j += 4)
+      {
+        parallel[j] = eyeAndFocalPoint(shared, 6.0 * j / 47);
+      }
+    });
+  }
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  for (int j = 0; j < 48; ++j)
+  {
+    EXPECT_EQ(parallel[j], serial[j]) << j;
+  }
+}
