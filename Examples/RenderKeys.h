@@ -224,12 +224,52 @@ inline std::string ReadSmallFile(const std::string& file, std::uintmax_t limit, 
   return text;
 }
 
+/// The timing fields of a key: its own Kochanek-Bartels tension, continuity and bias (any of
+/// the three given: the key has its own, the missing ones 0; else the path's apply) and the
+/// eases of the motion arriving at it (ease_in) and leaving it (ease_out), each in [0, 1].
+struct KeyTiming
+{
+  bool HasTensionContinuityBias = false;
+  double Tension = 0.0;
+  double Continuity = 0.0;
+  double Bias = 0.0;
+  bool HasEase = false; // ease_in or ease_out given (the other one 0)
+  double EaseIn = 0.0;  // arriving at the key
+  double EaseOut = 0.0; // leaving the key
+};
+
+/// The timing fields of a path (the camera, each prop): tension, continuity and bias in
+/// [-1, 1] for the keys without their own, the eases of the whole path in [0, 1] (ease_in: it
+/// starts slowly, ease_out: it ends slowly) and constant speed.
+struct PathTiming
+{
+  double Tension = 0.0;
+  double Continuity = 0.0;
+  double Bias = 0.0;
+  double EaseIn = 0.0;
+  double EaseOut = 0.0;
+  bool ConstantSpeed = false;
+  /// Props: the point whose path is measured, relative to the object's centre.
+  double ConstantSpeedPoint[3] = { 0.0, 0.0, 0.0 };
+  /// The camera: what is measured, one of ConstantSpeedMeasures().
+  std::string ConstantSpeedMeasure = "eye_and_focal_point";
+};
+
+/// The values of the camera's constant_speed_measure, in vtkCameraInterpolatorLCT's order
+/// (CONSTANT_SPEED_EYE_AND_FOCAL_POINT, CONSTANT_SPEED_EYE, CONSTANT_SPEED_FOCAL_POINT).
+inline const std::vector<std::string>& ConstantSpeedMeasures()
+{
+  static const std::vector<std::string> names = { "eye_and_focal_point", "eye", "focal_point" };
+  return names;
+}
+
 struct CameraKey
 {
   double Time = 0.0;
   vtkSmartPointer<vtkCamera> Camera;
   std::string Path;           // "camera.keys[3]", for messages
   bool ClippingRange = false; // given by the key (else reset from the scene's bounds per frame)
+  KeyTiming Timing;
 };
 
 struct PropKey
@@ -237,12 +277,14 @@ struct PropKey
   double Time = 0.0;
   std::array<double, 16> Matrix{}; // row-major 4x4
   std::string Path;
+  KeyTiming Timing;
 };
 
 struct PropTrack
 {
   std::string Interpolation; // empty: the camera's
   bool ConsistentRotation = false;
+  PathTiming Timing;
   std::vector<PropKey> Keys;
 };
 
@@ -307,7 +349,8 @@ struct Keys
   std::string Source = "built-in keys"; // file name, for messages
   std::string Interpolation = "spline";
   bool ConsistentRotation = false; // camera
-  std::vector<CameraKey> Camera;   // in increasing time (see SortByTime)
+  PathTiming CameraTiming;
+  std::vector<CameraKey> Camera; // in increasing time (see SortByTime)
   std::map<std::string, PropTrack> Props;
   Scene View;
 };
@@ -781,6 +824,73 @@ public:
     return keys;
   }
 
+  /// A key's timing fields (tension, continuity, bias in [-1, 1]; ease_in, ease_out in [0, 1]).
+  KeyTiming ReadKeyTiming(const nlohmann::json& key, const std::string& path) const
+  {
+    KeyTiming out;
+    double* tcb[3] = { &out.Tension, &out.Continuity, &out.Bias };
+    const char* names[3] = { "tension", "continuity", "bias" };
+    for (int i = 0; i < 3; ++i)
+    {
+      if (key.contains(names[i]))
+      {
+        *tcb[i] = this->Number(key.at(names[i]), path + "." + names[i], -1.0, 1.0);
+        out.HasTensionContinuityBias = true;
+      }
+    }
+    if (key.contains("ease_in"))
+    {
+      out.EaseIn = this->Number(key.at("ease_in"), path + ".ease_in", 0.0, 1.0);
+      out.HasEase = true;
+    }
+    if (key.contains("ease_out"))
+    {
+      out.EaseOut = this->Number(key.at("ease_out"), path + ".ease_out", 0.0, 1.0);
+      out.HasEase = true;
+    }
+    return out;
+  }
+
+  /// The timing fields of a path (`object` is the camera or a prop); `camera` selects
+  /// constant_speed_measure (the camera) or constant_speed_point (a prop).
+  PathTiming ReadPathTiming(
+    const nlohmann::json& object, const std::string& path, bool camera) const
+  {
+    PathTiming out;
+    const std::pair<const char*, double*> tcb[3] = { { "tension", &out.Tension },
+      { "continuity", &out.Continuity }, { "bias", &out.Bias } };
+    for (const auto& [name, value] : tcb)
+    {
+      if (object.contains(name))
+      {
+        *value = this->Number(object.at(name), path + "." + name, -1.0, 1.0);
+      }
+    }
+    if (object.contains("ease_in"))
+    {
+      out.EaseIn = this->Number(object.at("ease_in"), path + ".ease_in", 0.0, 1.0);
+    }
+    if (object.contains("ease_out"))
+    {
+      out.EaseOut = this->Number(object.at("ease_out"), path + ".ease_out", 0.0, 1.0);
+    }
+    if (object.contains("constant_speed"))
+    {
+      out.ConstantSpeed = this->Bool(object.at("constant_speed"), path + ".constant_speed");
+    }
+    if (camera && object.contains("constant_speed_measure"))
+    {
+      out.ConstantSpeedMeasure =
+        this->Choice(object, "constant_speed_measure", path, ConstantSpeedMeasures());
+    }
+    if (!camera)
+    {
+      const double X = Limits::MaxCoordinate;
+      this->Vector(object, "constant_speed_point", path, 3, out.ConstantSpeedPoint, -X, X);
+    }
+    return out;
+  }
+
   CameraKey ReadCameraKey(const nlohmann::json& key, const std::string& path) const
   {
     if (!key.is_object())
@@ -789,10 +899,12 @@ public:
     }
     this->CheckKeys(key, path,
       { "time", "position", "focal_point", "view_up", "view_angle", "window_center", "view_shear",
-        "parallel_scale", "parallel", "clipping_range" });
+        "parallel_scale", "parallel", "clipping_range", "tension", "continuity", "bias", "ease_in",
+        "ease_out" });
     CameraKey out;
     out.Path = path;
     out.Time = this->Time(key, path);
+    out.Timing = this->ReadKeyTiming(key, path);
     CameraValues v;
     const double X = Limits::MaxCoordinate;
     if (!this->Vector(key, "position", path, 3, v.Position, -X, X))
@@ -833,10 +945,13 @@ public:
     {
       this->Fail(path + " must be an object");
     }
-    this->CheckKeys(key, path, { "time", "matrix", "translate", "rotate", "scale", "shear" });
+    this->CheckKeys(key, path,
+      { "time", "matrix", "translate", "rotate", "scale", "shear", "tension", "continuity", "bias",
+        "ease_in", "ease_out" });
     PropKey out;
     out.Path = path;
     out.Time = this->Time(key, path);
+    out.Timing = this->ReadKeyTiming(key, path);
     const double X = Limits::MaxCoordinate;
     if (key.contains("matrix"))
     {
@@ -1009,8 +1124,11 @@ public:
         {
           this->Fail(path + " must be an object");
         }
-        this->CheckKeys(it.value(), path, { "keys", "interpolation", "consistent_rotation" });
+        this->CheckKeys(it.value(), path,
+          { "keys", "interpolation", "consistent_rotation", "tension", "continuity", "bias",
+            "ease_in", "ease_out", "constant_speed", "constant_speed_point" });
         PropTrack track;
+        track.Timing = this->ReadPathTiming(it.value(), path, false);
         if (it.value().contains("interpolation"))
         {
           track.Interpolation = this->Interpolation(it.value(), path);
@@ -1048,7 +1166,10 @@ public:
 private:
   void ReadCamera(const nlohmann::json& camera, Keys& keys) const
   {
-    this->CheckKeys(camera, "camera", { "interpolation", "keys", "consistent_rotation" });
+    this->CheckKeys(camera, "camera",
+      { "interpolation", "keys", "consistent_rotation", "tension", "continuity", "bias", "ease_in",
+        "ease_out", "constant_speed", "constant_speed_measure" });
+    keys.CameraTiming = this->ReadPathTiming(camera, "camera", true);
     if (camera.contains("interpolation"))
     {
       keys.Interpolation = this->Interpolation(camera, "camera");

@@ -20,6 +20,7 @@
 #include "vtkConeSource.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGLTFReader.h"
 #include "vtkGeometryFilter.h"
@@ -73,6 +74,7 @@
 #include <string>
 #include <system_error>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -120,6 +122,15 @@ options:
   --fps N            frame rate of video.ogv (default 24, 1 <= N <= 240)
   --interpolation linear|spline|bspline|subdivision
                      curve scheme for the camera and every prop (overrides the file)
+  --tension T, --continuity C, --bias B
+                     Kochanek-Bartels tension, continuity and bias (each in [-1, 1]) of the
+                     camera path and every prop path, replacing the paths' own "tension",
+                     "continuity", "bias" (keys with their own keep them); spline type only
+  --ease-in E, --ease-out E
+                     ease of the camera path and every prop path (each in [0, 1]; 1: from or to
+                     rest): ease-in starts slowly, ease-out ends slowly (replaces the paths' own)
+  --constant-speed   constant speed on for the camera path and every prop path (see "timing")
+                     Flags apply whatever the camera keys come from (keys file, .pvcc, .pvsm).
   --compare          split screen: left vtkCameraInterpolatorLCT, right VTK's vtkCameraInterpolator
                      on the same camera keys (bspline/subdivision: VTK uses its spline; at most
                      1000 camera keys: VTK's interpolator initialises in quadratic time)
@@ -127,7 +138,8 @@ options:
                      props.NAME can animate (repeatable; at most 16 mesh files in all)
   --demo-scene       draw the built-in demo scene too
   --describe         print the scene's bounds, each object's bounds, arrays and visibility, the
-                     time ranges and the camera keys, then exit (writes nothing, needs no X)
+                     time ranges, the camera keys and every path's timing (with constant speed the
+                     key arrival times), then exit (writes nothing, needs no X)
   --out DIR          output directory (default out/render; created if missing)
   --overwrite        replace the frames of a different earlier run in DIR (see "output")
   -h, --help         this help
@@ -151,13 +163,20 @@ array "temperature" beside it; Render.HelpExample checks that it reads):
                "direction": [0, 1, 0], "resolution": 32, "representation": "wireframe"},
        "frame": {"source": "axes", "center": [-2.5, 0, 2.5], "length": 1}}},
    "camera": {"interpolation": "spline", "consistent_rotation": false,
+              "tension": 0, "continuity": 0, "bias": 0, "ease_in": 0.5, "ease_out": 0,
+              "constant_speed": false, "constant_speed_measure": "eye_and_focal_point",
               "keys": [{"time": 0, "position": [5, 3, 6], "focal_point": [0, 0.5, 0],
                         "view_up": [0, 1, 0], "view_angle": 30, "window_center": [0, 0],
                         "view_shear": [0, 0, 1], "parallel_scale": 1, "parallel": false,
                         "clipping_range": [0.5, 30]},
+                       {"time": 1, "position": [0, 3, 7], "focal_point": [0, 0.5, 0],
+                        "clipping_range": [0.5, 30], "tension": 0.5, "continuity": 0,
+                        "bias": -0.2, "ease_in": 0.3, "ease_out": 0.3},
                        {"time": 2, "position": [-5, 3, 6], "focal_point": [0, 0.5, 0],
                         "clipping_range": [0.5, 30]}]},
    "props": {"ball": {"interpolation": "spline", "consistent_rotation": false,
+                      "tension": 0, "continuity": 0, "bias": 0, "ease_in": 0, "ease_out": 0.5,
+                      "constant_speed": true, "constant_speed_point": [0, 0, 0],
                       "keys": [{"time": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
                                {"time": 2, "translate": [0, 1, 0], "rotate": [90, 0, 1, 0],
                                 "scale": [1, 1.5, 1], "shear": [0.2, 0, 0]}]}}}
@@ -177,6 +196,12 @@ fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = ms
   parallel = false, clipping_range (none: reset per frame); at least 2 keys. Prop keys: time,
   and matrix (16 numbers, row-major, last row 0 0 0 1) or translate = [0,0,0],
   rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0].
+  Timing (see "timing" below), of the camera and of each props.NAME: tension = 0,
+  continuity = 0, bias = 0 (each in [-1, 1]), ease_in = 0, ease_out = 0 (each in [0, 1]),
+  constant_speed = false; the camera's constant_speed_measure = eye_and_focal_point (eye,
+  focal_point), a prop's constant_speed_point = [0,0,0]. Of every camera and prop key:
+  tension, continuity, bias (none: the path's; any one given: the key's own, the others 0),
+  ease_in = 0, ease_out = 0.
   Unknown keys are errors (a misspelt field would otherwise silently keep its default).
   Object files: .vtp .vtu .vtk (legacy POLYDATA) .stl .ply .obj .glb .gltf (VTK's readers), and
   every other format assimp reads (.fbx .dae .x .3ds .blend .ms3d .md5mesh .lwo .off ...; an
@@ -196,6 +221,18 @@ time: the frames span from the earliest key of any track (camera, each prop) to 
   Each track is clamped to its own key range: before its first key it holds the first key,
   after its last key the last (so a prop whose keys end at t = 2 stands still while the camera
   flies on to t = 4). The path metric measures the camera over its own key range.
+timing: tension, continuity and bias are the Kochanek-Bartels parameters of the spline type
+  (vtkKochanekSpline's, applied in log space; all 0: the default tangents), for the keys without
+  their own; every key is still reached at its time. A path's ease_in makes it start slowly,
+  ease_out end slowly (1: from or to rest; on the first and last key segment, with
+  constant_speed on the whole path). A key's ease_in slows the motion arriving at it, ease_out
+  the motion leaving it (speed times 1 - ease). constant_speed: the path is the same but is
+  travelled at an even speed (by arc length; the keys' own eases then do not apply): the
+  camera's eye and focal point together (eye_and_focal_point), the eye or the focal point; a
+  prop's constant_speed_point, relative to the object's centre (default: the centre). The keys
+  are then passed at other times, which --describe prints ("key arrival times"), with every
+  path's timing. The flags --tension, --continuity, --bias, --ease-in, --ease-out and
+  --constant-speed replace these for every path.
 clipping range: without clipping_range (the default), each frame's near and far planes are
   reset from the bounds of the visible objects (vtkRenderer::ResetCameraClippingRange); with
   clipping_range on every camera key, the interpolated range is used as it is. Some keys with
@@ -229,6 +266,8 @@ limits (input outside them is refused with a message naming the file and the key
   within +-1e15; view_angle in [1e-08, 179] (vtkCamera's own range); parallel_scale,
   clipping_range, radius, height, size, length in [1e-12, 1e15]; window_center, view_shear,
   shear within +-1000; scale in [1e-09, 1e09]; rotate angle within +-1e6 degrees;
+  tension, continuity, bias in [-1, 1]; ease_in, ease_out in [0, 1]; constant_speed_point
+  within +-1e15;
   <= 256 scene objects, <= 16 lights, resolution 3..1024, line_width and point_size 0.1..100
   .pvcc file <= 1 MiB, .pvsm <= 64 MiB, XML nesting <= 256; every value of the properties read
   a complete, finite decimal number
@@ -481,6 +520,11 @@ struct Options
   bool SizeGiven = false; // --size (else the scene's size, else 640x360)
   int Fps = 24;
   std::string Interpolation; // empty: from the keys
+  // Timing flags, for every path (camera and props): given ones replace the paths' own.
+  bool HasTension = false, HasContinuity = false, HasBias = false;
+  bool HasEaseIn = false, HasEaseOut = false;
+  double Tension = 0.0, Continuity = 0.0, Bias = 0.0, EaseIn = 0.0, EaseOut = 0.0;
+  bool ConstantSpeed = false;
   bool Compare = false;
   bool DemoScene = false;
   bool Describe = false;
@@ -615,6 +659,51 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
       }
       o.Interpolation = v;
     }
+    else if (a == "--tension" || a == "--continuity" || a == "--bias" || a == "--ease-in" ||
+      a == "--ease-out")
+    {
+      const bool ease = a == "--ease-in" || a == "--ease-out";
+      const double lo = ease ? 0.0 : -1.0;
+      const char* letter = a == "--tension" ? "T"
+        : a == "--continuity"               ? "C"
+        : a == "--bias"                     ? "B"
+                                            : "E";
+      double number = 0.0;
+      if (!value(v) || !RenderKeys::ParseNumber(v.c_str(), lo, 1.0, number))
+      {
+        return a + " expects a number " + letter + ", " + Num(lo) + " <= " + letter + " <= 1" +
+          (v.empty() ? std::string("") : " (got " + RenderKeys::Printable(v) + ")");
+      }
+      if (a == "--tension")
+      {
+        o.HasTension = true;
+        o.Tension = number;
+      }
+      else if (a == "--continuity")
+      {
+        o.HasContinuity = true;
+        o.Continuity = number;
+      }
+      else if (a == "--bias")
+      {
+        o.HasBias = true;
+        o.Bias = number;
+      }
+      else if (a == "--ease-in")
+      {
+        o.HasEaseIn = true;
+        o.EaseIn = number;
+      }
+      else
+      {
+        o.HasEaseOut = true;
+        o.EaseOut = number;
+      }
+    }
+    else if (a == "--constant-speed")
+    {
+      o.ConstantSpeed = true;
+    }
     else if (a == "--mesh")
     {
       const size_t eq = value(v) ? v.find('=') : std::string::npos;
@@ -694,6 +783,162 @@ int CameraType(const std::string& name)
     return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
   }
   return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Timing: tension, continuity, bias, eases and constant speed of the paths
+
+/// A path's timing from the keys file, with the timing flags given replacing its fields.
+RenderKeys::PathTiming EffectiveTiming(RenderKeys::PathTiming t, const Options& o)
+{
+  t.Tension = o.HasTension ? o.Tension : t.Tension;
+  t.Continuity = o.HasContinuity ? o.Continuity : t.Continuity;
+  t.Bias = o.HasBias ? o.Bias : t.Bias;
+  t.EaseIn = o.HasEaseIn ? o.EaseIn : t.EaseIn;
+  t.EaseOut = o.HasEaseOut ? o.EaseOut : t.EaseOut;
+  t.ConstantSpeed = t.ConstantSpeed || o.ConstantSpeed;
+  return t;
+}
+
+/// The timing flags given, for the manifest: "as in the keys" or e.g. "tension 0.5, constant
+/// speed" (they change the frames as much as --interpolation does).
+std::string TimingFlags(const Options& o)
+{
+  std::string out;
+  auto add = [&](bool given, const char* name, double v) {
+    if (given)
+    {
+      out += (out.empty() ? "" : ", ") + std::string(name) + " " + Num(v);
+    }
+  };
+  add(o.HasTension, "tension", o.Tension);
+  add(o.HasContinuity, "continuity", o.Continuity);
+  add(o.HasBias, "bias", o.Bias);
+  add(o.HasEaseIn, "ease in", o.EaseIn);
+  add(o.HasEaseOut, "ease out", o.EaseOut);
+  if (o.ConstantSpeed)
+  {
+    out += (out.empty() ? "" : ", ") + std::string("constant speed");
+  }
+  return out.empty() ? "as in the keys" : out;
+}
+
+/// Gives `path` (vtkCameraInterpolatorLCT or vtkTransformInterpolatorLCT, its keys already
+/// added) the path's timing `t` and each key's own. The values were checked when read, so the
+/// interpolator refuses none; if it does, the message says which (`where`: "camera",
+/// "props.NAME"), else it is empty.
+template <typename Interpolator, typename Key>
+std::string ApplyTiming(Interpolator* path, const RenderKeys::PathTiming& t,
+  const std::vector<Key>& keys, const std::string& where, ErrorCatcher& errors)
+{
+  const char* name = std::is_same<Interpolator, vtkCameraInterpolatorLCT>::value
+    ? "vtkCameraInterpolatorLCT"
+    : "vtkTransformInterpolatorLCT";
+  auto refused = [&](const std::string& what) {
+    return where + ": " + what + " refused by " + name + ": " + errors.Take();
+  };
+  if (!path->SetTension(t.Tension) || !path->SetContinuity(t.Continuity) || !path->SetBias(t.Bias))
+  {
+    return refused(
+      "tension " + Num(t.Tension) + ", continuity " + Num(t.Continuity) + ", bias " + Num(t.Bias));
+  }
+  if (!path->SetEaseIn(t.EaseIn) || !path->SetEaseOut(t.EaseOut))
+  {
+    return refused("ease in " + Num(t.EaseIn) + ", ease out " + Num(t.EaseOut));
+  }
+  path->SetConstantSpeed(t.ConstantSpeed);
+  if constexpr (std::is_same<Interpolator, vtkCameraInterpolatorLCT>::value)
+  {
+    const auto& measures = RenderKeys::ConstantSpeedMeasures();
+    path->SetConstantSpeedMeasure(static_cast<int>(
+      std::find(measures.begin(), measures.end(), t.ConstantSpeedMeasure) - measures.begin()));
+  }
+  else
+  {
+    if (!path->SetConstantSpeedPoint(t.ConstantSpeedPoint))
+    {
+      return refused("constant speed point (" + Num(t.ConstantSpeedPoint[0]) + ", " +
+        Num(t.ConstantSpeedPoint[1]) + ", " + Num(t.ConstantSpeedPoint[2]) + ")");
+    }
+  }
+  for (const auto& key : keys)
+  {
+    const RenderKeys::KeyTiming& k = key.Timing;
+    if (k.HasTensionContinuityBias &&
+      !path->SetKeyTensionContinuityBias(key.Time, k.Tension, k.Continuity, k.Bias))
+    {
+      return key.Path + ": tension, continuity and bias refused by " + name + ": " + errors.Take();
+    }
+    if (k.HasEase && !path->SetKeyEase(key.Time, k.EaseIn, k.EaseOut))
+    {
+      return key.Path + ": ease_in and ease_out refused by " + name + ": " + errors.Take();
+    }
+  }
+  return "";
+}
+
+/// A key's own timing for --describe, "" when it has none: ", own tension 0.5, continuity 0,
+/// bias 0, ease in 0, ease out 0.3".
+std::string KeyTimingText(const RenderKeys::KeyTiming& k)
+{
+  std::string out;
+  if (k.HasTensionContinuityBias)
+  {
+    out += ", own tension " + Num(k.Tension) + ", continuity " + Num(k.Continuity) + ", bias " +
+      Num(k.Bias);
+  }
+  if (k.HasEase)
+  {
+    out += ", ease in " + Num(k.EaseIn) + ", ease out " + Num(k.EaseOut);
+  }
+  return out;
+}
+
+/// The timing `path` holds, for --describe: tension, continuity, bias, eases, constant speed
+/// and, with constant speed, the times at which the path passes its keys (GetKeyArrivalTimes).
+template <typename Interpolator>
+std::string PathTimingText(Interpolator* path, bool keyEases, ErrorCatcher& errors)
+{
+  std::string out = "tension " + Num(path->GetTension()) + ", continuity " +
+    Num(path->GetContinuity()) + ", bias " + Num(path->GetBias());
+  if ((path->GetTension() != 0.0 || path->GetContinuity() != 0.0 || path->GetBias() != 0.0) &&
+    path->GetInterpolationType() != Interpolator::INTERPOLATION_TYPE_SPLINE)
+  {
+    out += " (unused: they shape the spline type only)";
+  }
+  out += ", ease in " + Num(path->GetEaseIn()) + ", ease out " + Num(path->GetEaseOut());
+  if (!path->GetConstantSpeed())
+  {
+    return out + ", constant speed off";
+  }
+  out += ", constant speed on";
+  if constexpr (std::is_same<Interpolator, vtkCameraInterpolatorLCT>::value)
+  {
+    out +=
+      " (measure: " + RenderKeys::ConstantSpeedMeasures()[path->GetConstantSpeedMeasure()] + ")";
+  }
+  else
+  {
+    double p[3];
+    path->GetConstantSpeedPoint(p);
+    out +=
+      " (point (" + Num(p[0]) + ", " + Num(p[1]) + ", " + Num(p[2]) + ") from the object's centre)";
+  }
+  if (keyEases)
+  {
+    out += " (the keys' own eases do not apply under constant speed)";
+  }
+  vtkNew<vtkDoubleArray> arrivals;
+  if (!path->GetKeyArrivalTimes(arrivals))
+  {
+    return out + "; key arrival times: not measured (" + errors.Take() + ")";
+  }
+  out += "; key arrival times t =";
+  for (vtkIdType i = 0; i < arrivals->GetNumberOfTuples(); ++i)
+  {
+    out += std::string(i == 0 ? " " : ", ") + Num(arrivals->GetValue(i));
+  }
+  return out;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -904,8 +1149,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& file)
       known += (known.empty() ? "" : " ") + r.first;
     }
     throw InputError(file + ": unsupported mesh format \"" + RenderKeys::Printable(ext) +
-      "\" (expected " + known + " or one of assimp's: " +
-      vtkSkinnedMeshReaderLCT::GetFileExtensions() + ")");
+      "\" (expected " + known +
+      " or one of assimp's: " + vtkSkinnedMeshReaderLCT::GetFileExtensions() + ")");
   }
   RenderKeys::CheckMeshFile(file, ext);
 
@@ -1523,8 +1768,12 @@ std::string BoundsText(const double b[6])
 /// `--describe`: what a user needs to place cameras and check an import, on stdout.
 void Describe(const RenderKeys::Keys& keys, const std::vector<Prop>& props, bool demo,
   const std::string& cameraNote, double tmin, double tmax, double cameraMin, double cameraMax,
-  bool fixedClipping)
+  bool fixedClipping, vtkCameraInterpolatorLCT* cameraPath, ErrorCatcher& cameraErrors)
 {
+  auto anyKeyEase = [](const auto& keyList) {
+    return std::any_of(
+      keyList.begin(), keyList.end(), [](const auto& k) { return k.Timing.HasEase; });
+  };
   double all[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
     VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   int visible = 0;
@@ -1586,10 +1835,33 @@ void Describe(const RenderKeys::Keys& keys, const std::vector<Prop>& props, bool
   for (const auto& k : keys.Camera)
   {
     vtkCamera* c = k.Camera;
-    std::printf("  t = %s: position %s, focal point %s, view up %s, %s\n", Num(k.Time).c_str(),
+    std::printf("  t = %s: position %s, focal point %s, view up %s, %s%s\n", Num(k.Time).c_str(),
       v3(c->GetPosition()).c_str(), v3(c->GetFocalPoint()).c_str(), v3(c->GetViewUp()).c_str(),
       c->GetParallelProjection() ? ("parallel scale " + Num(c->GetParallelScale())).c_str()
-                                 : ("view angle " + Num(c->GetViewAngle())).c_str());
+                                 : ("view angle " + Num(c->GetViewAngle())).c_str(),
+      KeyTimingText(k.Timing).c_str());
+  }
+  std::printf("camera timing: %s\n",
+    PathTimingText(cameraPath, anyKeyEase(keys.Camera), cameraErrors).c_str());
+  for (const auto& p : props)
+  {
+    if (!p.Path)
+    {
+      continue;
+    }
+    const auto track = keys.Props.find(p.Name);
+    const std::vector<RenderKeys::PropKey> none;
+    const auto& propKeys = track != keys.Props.end() ? track->second.Keys : none;
+    std::printf("props.%s timing: %s\n", RenderKeys::Printable(p.Name).c_str(),
+      PathTimingText(p.Path.GetPointer(), anyKeyEase(propKeys), *p.Errors).c_str());
+    for (const auto& k : propKeys)
+    {
+      const std::string own = KeyTimingText(k.Timing);
+      if (!own.empty())
+      {
+        std::printf("  key t = %s: %s\n", Num(k.Time).c_str(), own.substr(2).c_str());
+      }
+    }
   }
 }
 
@@ -1651,7 +1923,8 @@ nlohmann::json RunManifest(
   return { { "lct-render manifest", 1 }, { "frames", opt.Frames }, { "size", { width, height } },
     { "fps", opt.Fps },
     { "interpolation", opt.Interpolation.empty() ? "as in the keys" : opt.Interpolation },
-    { "compare", opt.Compare }, { "demo_scene", demo }, { "inputs", files } };
+    { "timing", TimingFlags(opt) }, { "compare", opt.Compare }, { "demo_scene", demo },
+    { "inputs", files } };
 }
 
 /// The differences between two manifests, for the message that refuses a run.
@@ -2130,6 +2403,7 @@ int main(int argc, char* argv[])
       keys.Camera = state.Keys;
       keys.Interpolation = state.Interpolation;
       keys.ConsistentRotation = false;
+      keys.CameraTiming = RenderKeys::PathTiming(); // a state has no timing fields
       cameraNote = opt.StateFile + ", " + state.Cue + ", AnimationScene t = " + Num(state.Start) +
         ".." + Num(state.End);
     }
@@ -2165,6 +2439,12 @@ int main(int argc, char* argv[])
       {
         vtkPath->AddCamera(key.Time, key.Camera);
       }
+    }
+    const std::string cameraTiming = ApplyTiming(static_cast<vtkCameraInterpolatorLCT*>(cameraPath),
+      EffectiveTiming(keys.CameraTiming, opt), keys.Camera, "camera", cameraErrors);
+    if (!cameraTiming.empty())
+    {
+      throw InputError(source + ": " + cameraTiming);
     }
 
     // Meshes: --mesh and the scene's files, each read in a forked child (ReadMesh).
@@ -2303,6 +2583,13 @@ int main(int argc, char* argv[])
             it->Errors->Take() + ")");
         }
       }
+      const std::string timing =
+        ApplyTiming(it->Path.GetPointer(), EffectiveTiming(track.Timing, opt), track.Keys,
+          "props." + RenderKeys::Printable(name), *it->Errors);
+      if (!timing.empty())
+      {
+        throw InputError(source + ": " + timing);
+      }
       it->Current = vtkSmartPointer<vtkMatrix4x4>::New();
       it->Actor->SetUserMatrix(it->Current);
     }
@@ -2341,7 +2628,8 @@ int main(int argc, char* argv[])
 
   if (opt.Describe)
   {
-    Describe(keys, props, demo, cameraNote, tmin, tmax, cameraMin, cameraMax, fixedClipping);
+    Describe(keys, props, demo, cameraNote, tmin, tmax, cameraMin, cameraMax, fixedClipping,
+      cameraPath, cameraErrors);
     return 0;
   }
 
