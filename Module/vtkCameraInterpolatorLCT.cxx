@@ -594,10 +594,9 @@ bool vtkCameraInterpolatorLCT::CurveTime(double t, double& curveTime, const char
   }
   const Internals::Settings settings = Internals::SettingsOf(this);
   const int measure = this->ConstantSpeedMeasure;
-  const auto positionAt = [&](double tau, Eigen::Matrix<double, 6, 1>& p) {
+  const auto positionAt = [&](double tau, Eigen::Matrix<double, 6, 1>& p, std::string& cause) {
     lct::CameraParameters camera;
-    std::string ignored;
-    if (!in.CameraAt(tau, settings, camera, ignored))
+    if (!in.CameraAt(tau, settings, camera, cause))
     {
       return false;
     }

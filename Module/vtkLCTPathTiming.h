@@ -198,9 +198,10 @@ class ConstantSpeedTable
 public:
   using Point = typename lct::ArcLengthTime<Dim>::Point;
 
-  /// The table for keys at `times` (n >= 2) at modification time `mtime`; positionAt(tau, p)
-  /// gives the measured point at curve time tau. Null, with `why` set, when the path cannot be
-  /// measured (a point that is not finite, a length that overflows).
+  /// The table for keys at `times` (n >= 2) at modification time `mtime`;
+  /// positionAt(tau, p, cause) gives the measured point at curve time tau, or false with the
+  /// cause. Null, with `why` set, when the path cannot be measured (a curve point that cannot be
+  /// computed, a length that overflows).
   template <typename PositionAt>
   const lct::ArcLengthTime<Dim>* Get(
     vtkMTimeType mtime, const double* times, int n, PositionAt&& positionAt, std::string& why)
@@ -234,7 +235,9 @@ public:
                                     << "; output unchanged.");
       return false;
     }
-    curveTime = table->curveTime(lct::easedPathTime(times[0], times[n - 1], t, timing), positionAt);
+    std::string ignored;
+    curveTime = table->curveTime(lct::easedPathTime(times[0], times[n - 1], t, timing),
+      [&](double tau, Point& p) { return positionAt(tau, p, ignored); });
     return true;
   }
 
@@ -253,12 +256,14 @@ private:
   template <typename PositionAt>
   bool Sample(double tau, PositionAt&& positionAt, Point& p)
   {
-    if (positionAt(tau, p) && p.allFinite())
+    std::string cause;
+    if (positionAt(tau, p, cause) && p.allFinite())
     {
       return true;
     }
     std::ostringstream os;
-    os << "the measured point at curve time " << lct::formatNumber(tau) << " cannot be computed";
+    os << "the curve point at curve time " << lct::formatNumber(tau)
+       << " cannot be measured: " << (cause.empty() ? "it is not finite" : cause);
     this->Why = os.str();
     return false;
   }

@@ -917,12 +917,15 @@ bool vtkTransformInterpolatorLCT::CurveTime(double t, double& curveTime, const c
   }
   const lct::CurveScheme scheme = toScheme(this->InterpolationType);
   const lct::KeyLogs* logs = scheme == lct::CurveScheme::Bezier ? in.Bezier() : in.Logs();
-  const auto positionAt = [&](double tau, Eigen::Vector3d& p) {
+  const auto positionAt = [&](double tau, Eigen::Vector3d& p, std::string& cause) {
     Eigen::Matrix4d m;
-    if (!logs ||
-      in.CurveAt(*logs, scheme, this->MonotoneTangents, this->ConsistentRotation, tau, m,
-        nullptr) != lct::Status::Ok)
+    const lct::Status status = logs
+      ? in.CurveAt(*logs, scheme, this->MonotoneTangents, this->ConsistentRotation, tau, m, nullptr)
+      : lct::Status::InvalidArgument;
+    if (status != lct::Status::Ok)
     {
+      cause = logs ? std::string("the combination of the keys failed: ") + lct::describe(status)
+                   : std::string("the key logs are missing");
       return false;
     }
     p = m.topLeftCorner<3, 3>() * in.ConstantSpeedPoint + m.topRightCorner<3, 1>();

@@ -2,14 +2,17 @@
 // sequence of AddCamera (position, focal point, view up, view angle, parallel scale, window
 // centre, view shear, clipping range, projection; new times, existing times to replace a key,
 // NaN/Inf), RemoveCamera, interpolation type (out of range too), ConsistentRotation, method
-// (FocalFrame / CameraMatrix) and Initialize, interleaved with InterpolateCamera.
+// (FocalFrame / CameraMatrix), Initialize and the timing controls (FuzzTiming.h), interleaved
+// with InterpolateCamera.
 //
 // Properties: no crash, sanitizer report or hang; AddCamera accepts exactly the keys that
 // lct::toCameraKey accepts (finite time, same projection as the others) and the bookkeeping
 // matches a shadow model; InterpolateCamera returning 1 reports no error and leaves every
 // parameter of the camera finite; returning 0 reported an error and left the camera untouched;
-// the interpolating types reproduce a key's position and focal point at its time.
+// the interpolating types reproduce a key's position and focal point at its time (without
+// ConstantSpeed, which moves key times).
 #include "FuzzInput.h"
+#include "FuzzTiming.h"
 
 #include "vtkCameraInterpolatorLCT.h"
 
@@ -300,7 +303,9 @@ private:
       const bool overshoot = type == vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE ||
         type == vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
       LCT_FUZZ_CHECK(cameraMatrix || this->Keys.empty() || std::isnan(t) || std::isinf(t) ||
-          (overshoot && this->Errors.Last.find("overshoot") != std::string::npos),
+          (overshoot && this->Errors.Last.find("overshoot") != std::string::npos) ||
+          (this->Path->GetConstantSpeed() &&
+            lct_fuzz::ExplainedConstantSpeedRefusal(this->Errors.Last)),
         "InterpolateCamera (FocalFrame) failed at t = " << t << ": " << this->Errors.Last);
       // The CameraMatrix method may fail on its combination or its decomposition, never for a
       // missing MatrixLog step: the keys that need one are refused (D19).
@@ -321,7 +326,7 @@ private:
     // The interpolating types pass through their keys (position and focal point).
     const auto key = this->Find(t);
     const int type = this->Path->GetInterpolationType();
-    if (key != this->Keys.end() && !cameraMatrix &&
+    if (key != this->Keys.end() && !cameraMatrix && !this->Path->GetConstantSpeed() &&
       type != vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE &&
       !this->Path->GetConsistentRotation())
     {
@@ -342,10 +347,30 @@ private:
     }
   }
 
+  void Timing()
+  {
+    lct_fuzz::FuzzTiming(
+      this->In, this->Path.Get(), [this] { return this->Time(); },
+      [this](double t) { return this->Find(t) != this->Keys.end(); },
+      this->Keys.empty() ? 0.0 : this->Keys.begin()->first,
+      this->Keys.empty() ? 0.0 : this->Keys.rbegin()->first, static_cast<int>(this->Keys.size()),
+      [this] { return this->ErrorCount(); },
+      [this](lct_fuzz::Input& in) {
+        const int measure = in.Int(-2, 4);
+        LCT_FUZZ_TRACE("SetConstantSpeedMeasure " << measure);
+        this->Path->SetConstantSpeedMeasure(measure); // clamped, as vtkSetClampMacro does
+        return std::make_pair(
+          this->Path->GetConstantSpeedMeasure() == std::clamp(measure, 0, 2), true);
+      });
+  }
+
   void Step()
   {
-    switch (this->In.Byte() % 10)
+    switch (this->In.Byte() % 11)
     {
+      case 10:
+        this->Timing();
+        break;
       case 0:
       case 1:
       case 2:

@@ -2,14 +2,19 @@
 // of AddTransform (vtkMatrix4x4 / vtkTransform / vtkProp3D / null; new times, the time of an
 // existing key to replace it, neighbouring doubles, NaN/Inf), RemoveTransform, SetBezierControls,
 // interpolation type (including out-of-range values), parametrisation, ConsistentRotation and
-// Initialize, interleaved with InterpolateTransform into all three output types at key times,
-// between them, outside the range, at NaN and +-Inf.
+// Initialize, the timing controls (tension, continuity, bias, eases per path and per key,
+// ConstantSpeed and its point, any double including NaN/Inf; GetKeyArrivalTimes), interleaved
+// with InterpolateTransform into all three output types at key times, between them, outside the
+// range, at NaN and +-Inf.
 //
 // Properties: no crash, sanitizer report or hang; the key bookkeeping matches a shadow model
 // (count, time range, which calls succeed); a call returning 1 reports no error and its output is
 // finite and affine; a call returning 0 reported an error and left the output untouched; a key
-// time is reproduced by the interpolating types.
+// time is reproduced by the interpolating types (without ConstantSpeed, which moves key times);
+// a timing setter succeeds exactly for values in its range and a key at the time, else reports;
+// arrival times are finite, in order, from the first key time to the last.
 #include "FuzzInput.h"
+#include "FuzzTiming.h"
 
 #include "vtkLogTransform.h"
 #include "vtkTransformInterpolatorLCT.h"
@@ -386,7 +391,9 @@ private:
       // output's own SetMatrix.
       const bool explained = this->Keys.empty() || !std::isfinite(t) ||
         this->Errors.LastSource != this->Path.Get() ||
-        lct_fuzz::ExplainedRefusal(this->Errors.Last);
+        lct_fuzz::ExplainedRefusal(this->Errors.Last) ||
+        (this->Path->GetConstantSpeed() &&
+          lct_fuzz::ExplainedConstantSpeedRefusal(this->Errors.Last));
       LCT_FUZZ_CHECK(explained,
         "InterpolateTransform (" << (this->MatrixLog() ? "MatrixLog" : "Polar") << ", type "
                                  << this->Path->GetInterpolationType() << ") failed at t = " << t
@@ -403,7 +410,7 @@ private:
     // The interpolating types pass through their keys.
     const int type = this->Path->GetInterpolationType();
     const auto key = this->Find(t);
-    if (key != this->Keys.end() &&
+    if (key != this->Keys.end() && !this->Path->GetConstantSpeed() &&
       type != vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE &&
       !this->Path->GetConsistentRotation() && WellConditioned(key->second.Matrix, 1e6))
     {
@@ -420,10 +427,29 @@ private:
     }
   }
 
+  void Timing()
+  {
+    lct_fuzz::FuzzTiming(
+      this->In, this->Path.Get(), [this] { return this->Time(); },
+      [this](double t) { return this->Find(t) != this->Keys.end(); },
+      this->Keys.empty() ? 0.0 : this->Keys.begin()->first,
+      this->Keys.empty() ? 0.0 : this->Keys.rbegin()->first, static_cast<int>(this->Keys.size()),
+      [this] { return this->ErrorCount(); },
+      [this](lct_fuzz::Input& in) {
+        const double p[3] = { in.Double(), in.Double(), in.Double() };
+        LCT_FUZZ_TRACE("SetConstantSpeedPoint " << p[0] << " " << p[1] << " " << p[2]);
+        return std::make_pair(this->Path->SetConstantSpeedPoint(p),
+          std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+      });
+  }
+
   void Step()
   {
-    switch (this->In.Byte() % 12)
+    switch (this->In.Byte() % 13)
     {
+      case 12:
+        this->Timing();
+        break;
       case 0:
       case 1:
       case 2:
