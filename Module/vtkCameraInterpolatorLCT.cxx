@@ -630,7 +630,8 @@ int vtkCameraInterpolatorLCT::GetKeyArrivalTimes(vtkDoubleArray* arrivals)
   {
     return 0; // CurveTime reported why
   }
-  in.ConstantSpeedTable.ArrivalTimes(n, arrivals); // built for this MTime by CurveTime
+  // Built for this MTime by CurveTime.
+  in.ConstantSpeedTable.ArrivalTimes(in.Keys.times().data(), n, in.Timing, arrivals);
   return 1;
 }
 

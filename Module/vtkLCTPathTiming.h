@@ -241,14 +241,20 @@ public:
     return true;
   }
 
-  /// The output times at which the path passes its keys (a valid table of n keys).
-  void ArrivalTimes(int n, vtkDoubleArray* out) const
+  /// The output times at which the path passes its keys (a valid table of n keys at `times`):
+  /// the arc-length times of the keys through the inverse of the path's ease. The end keys
+  /// keep their own times exactly.
+  void ArrivalTimes(
+    const double* times, int n, const lct::PathTiming& timing, vtkDoubleArray* out) const
   {
     out->SetNumberOfComponents(1);
     out->SetNumberOfTuples(n);
     for (int k = 0; k < n; ++k)
     {
-      out->SetValue(k, this->Table.outputTime(this->KeySamples[k]));
+      const double eased = this->Table.outputTime(this->KeySamples[k]);
+      out->SetValue(k,
+        k == 0 || k == n - 1 ? times[k]
+                             : lct::inverseEasedPathTime(times[0], times[n - 1], eased, timing));
     }
   }
 

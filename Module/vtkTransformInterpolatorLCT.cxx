@@ -957,7 +957,8 @@ int vtkTransformInterpolatorLCT::GetKeyArrivalTimes(vtkDoubleArray* arrivals)
   {
     return 0; // CurveTime reported why
   }
-  in.ConstantSpeedTable.ArrivalTimes(n, arrivals); // built for this MTime by CurveTime
+  // Built for this MTime by CurveTime.
+  in.ConstantSpeedTable.ArrivalTimes(in.Keys.times().data(), n, in.Timing, arrivals);
   return 1;
 }
 

@@ -18,4 +18,24 @@ double easeSegment(double u, double leaving, double arriving)
   return std::clamp(e, 0.0, 1.0);
 }
 
+double inverseEaseSegment(double e, double leaving, double arriving)
+{
+  e = std::clamp(e, 0.0, 1.0);
+  if ((leaving == 0.0 && arriving == 0.0) || e == 0.0 || e == 1.0)
+  {
+    return e;
+  }
+  double lo = 0.0, hi = 1.0;
+  for (int iteration = 0; iteration < 64 && lo < hi; ++iteration)
+  {
+    const double middle = 0.5 * (lo + hi);
+    if (middle <= lo || middle >= hi)
+    {
+      break;
+    }
+    (easeSegment(middle, leaving, arriving) < e ? lo : hi) = middle;
+  }
+  return 0.5 * (lo + hi);
+}
+
 } // namespace lct

@@ -32,6 +32,11 @@ inline bool isValidEase(double ease)
 /// e(u) for u in [0, 1] (clamped), leaving and arriving eases in [0, 1].
 VTKLCT_EXPORT double easeSegment(double u, double leaving, double arriving);
 
+/// The u with easeSegment(u, leaving, arriving) = e, for e in [0, 1] (clamped): when an eased
+/// segment reaches a given point of its curve. Bisection to the last bit (e is increasing, and
+/// flat only where both eases are 1 at an end, where any u there is an answer).
+VTKLCT_EXPORT double inverseEaseSegment(double e, double leaving, double arriving);
+
 } // namespace lct
 
 #endif

@@ -97,6 +97,19 @@ inline double easedPathTime(double first, double last, double t, const PathTimin
     first + (last - first) * easeSegment(u, path.easeIn, path.easeOut), first, last);
 }
 
+/// The output time t with easedPathTime(first, last, t, path) = eased: when a path under
+/// constant speed passes the point that the uneased arc-length time `eased` reaches.
+inline double inverseEasedPathTime(double first, double last, double eased, const PathTiming& path)
+{
+  if (!(last > first) || (path.easeIn == 0.0 && path.easeOut == 0.0))
+  {
+    return std::clamp(eased, first, last);
+  }
+  const double e = (std::clamp(eased, first, last) - first) / (last - first);
+  return std::clamp(
+    first + (last - first) * inverseEaseSegment(e, path.easeIn, path.easeOut), first, last);
+}
+
 /// The Spline tangents of segment `segment` (0 <= segment < keyCount - 1): Kochanek-Bartels at a
 /// key whose tension, continuity and bias are not all 0, else `defaultTangent(k)` (Catmull-Rom, or
 /// the monotone tangent of lct/MonotoneTangents.h).

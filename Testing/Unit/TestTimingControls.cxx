@@ -652,3 +652,31 @@ TEST(Concurrency, CameraConstantSpeedTableIsBuiltOnceAcrossThreads)
     EXPECT_EQ(parallel[j], serial[j]) << j;
   }
 }
+
+TEST(TimingControls, ArrivalTimesUnderConstantSpeedAndPathEasesPassTheKeys)
+{
+  // helper-11's case: with a path ease, the arrival times are the eased ones.
+  for (const double easeIn : { 0.0, 0.3, 1.0 })
+  {
+    for (const double easeOut : { 0.0, 0.5, 1.0 })
+    {
+      vtkNew<vtkTransformInterpolatorLCT> path;
+      addTranslations(path, { 0, 0.5, 2, 3 }, { 0, 0.25, 1.5, 4 });
+      path->ConstantSpeedOn();
+      ASSERT_EQ(path->SetEaseIn(easeIn), 1);
+      ASSERT_EQ(path->SetEaseOut(easeOut), 1);
+      vtkNew<vtkDoubleArray> arrivals;
+      ASSERT_EQ(path->GetKeyArrivalTimes(arrivals), 1);
+      const double keys[] = { 0, 0.25, 1.5, 4 };
+      for (int k = 0; k < 4; ++k)
+      {
+        EXPECT_NEAR(xAt(path, arrivals->GetValue(k)), keys[k], 1e-9)
+          << "ease in " << easeIn << ", out " << easeOut << ", key " << k;
+      }
+    }
+  }
+  for (const double e : { 0.0, 1e-9, 0.2, 0.5, 0.77, 1.0 })
+  {
+    EXPECT_NEAR(lct::easeSegment(lct::inverseEaseSegment(e, 0.4, 0.9), 0.4, 0.9), e, 1e-15);
+  }
+}
