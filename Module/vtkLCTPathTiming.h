@@ -339,6 +339,10 @@ private:
       {
         const double tau =
           j == kIntervalsPerSegment ? times[i + 1] : times[i] + h * j / kIntervalsPerSegment;
+        if (j < kIntervalsPerSegment && !(tau > taus.back() && tau < times[i + 1]))
+        {
+          continue; // keys a few ulps apart: no room for this sample
+        }
         if (!this->Sample(tau, positionAt, p) || !refine(taus.back(), previous, tau, p))
         {
           return;

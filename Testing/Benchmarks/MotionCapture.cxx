@@ -91,6 +91,7 @@ struct Method
   bool matrixLog = false;
   bool interpolating = true; // passes through the keys
   bool catmullRom = false;   // LCT Spline: MonotoneTangentsOff (plain Catmull-Rom)
+  double tension = 0.0;      // LCT Spline: Kochanek-Bartels tension (issue #12 §3)
 };
 
 const Method kMethods[] = {
@@ -110,6 +111,10 @@ const Method kMethods[] = {
   { "LCT Spline Catmull-Rom (MonotoneTangentsOff)", Library::LCT,
     vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE, false, false, true, true },
   { "Polar absolute CR", Library::PolarAbsolute, 0 },
+  { "LCT Spline, Kochanek-Bartels tension 0.2", Library::LCT,
+    vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE, false, false, true, true, 0.2 },
+  { "LCT Spline, Kochanek-Bartels tension 0.4", Library::LCT,
+    vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE, false, false, true, true, 0.4 },
 };
 constexpr int kMethodCount = static_cast<int>(sizeof(kMethods) / sizeof(kMethods[0]));
 // Rows used by name: the every-frame sanity check and the goal check.
@@ -152,6 +157,7 @@ public:
         l->SetInterpolationType(method.type);
         l->SetConsistentRotation(method.consistentRotation);
         l->SetMonotoneTangents(!method.catmullRom);
+        l->SetTension(method.tension);
         if (method.matrixLog)
         {
           l->SetParametrisationToMatrixLog(); // cannot fail without keys

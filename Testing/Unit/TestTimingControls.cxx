@@ -680,3 +680,26 @@ TEST(TimingControls, ArrivalTimesUnderConstantSpeedAndPathEasesPassTheKeys)
     EXPECT_NEAR(lct::easeSegment(lct::inverseEaseSegment(e, 0.4, 0.9), 0.4, 0.9), e, 1e-15);
   }
 }
+
+TEST(TimingControls, ConstantSpeedWithKeysOneUlpApartStillWorks)
+{
+  // Key times at neighbouring doubles leave no room for samples between them.
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  const double t1 = std::nextafter(1.0, 2.0), t2 = std::nextafter(t1, 2.0);
+  addTranslations(path, { 0.0, 1.0, t1, t2, 2.0 }, { 0.0, 1.0, 1.5, 2.0, 3.0 });
+  path->SetInterpolationTypeToLinear();
+  path->ConstantSpeedOn();
+  vtkNew<lct_test::ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkDoubleArray> arrivals;
+  ASSERT_EQ(path->GetKeyArrivalTimes(arrivals), 1);
+  EXPECT_EQ(errors->Count, 0);
+  for (int k = 1; k < 5; ++k)
+  {
+    EXPECT_GE(arrivals->GetValue(k), arrivals->GetValue(k - 1));
+  }
+  // The jumps between the ulp-apart keys take their share of the time by length.
+  EXPECT_NEAR(arrivals->GetValue(1), 2.0 / 3.0, 1e-9);
+  EXPECT_NEAR(arrivals->GetValue(3), 2.0 * 2.0 / 3.0, 1e-9);
+  EXPECT_NEAR(xAt(path, 1.0), 1.5, 1e-9);
+}
