@@ -268,8 +268,9 @@ private:
       return true;
     }
     std::ostringstream os;
-    os << "the curve point at curve time " << lct::formatNumber(tau)
-       << " cannot be measured: " << (cause.empty() ? "it is not finite" : cause);
+    os << "the curve point at curve time " << lct::formatNumber(tau) << " cannot be measured: "
+       << (cause.empty() ? "the measured point is out of the range of double precision there"
+                         : cause);
     this->Why = os.str();
     return false;
   }

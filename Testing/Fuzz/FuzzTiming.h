@@ -40,11 +40,14 @@ inline double TimingValue(Input& in, double lo, double hi)
 
 /// Whether an evaluation's error under ConstantSpeed is one the interpolators document: the
 /// path has a curve point that cannot be computed (a documented refusal of the combination, or
-/// a camera overshoot), or its length overflows.
+/// a camera overshoot), the measured point leaves double precision there (a ConstantSpeedPoint
+/// near 1e308 moved by the keys), or the path's length overflows.
 inline bool ExplainedConstantSpeedRefusal(const std::string& message)
 {
   return message.find("ConstantSpeed cannot measure the path") != std::string::npos &&
     (message.find("the length of the measured path is out of the range of double precision") !=
+        std::string::npos ||
+      message.find("the measured point is out of the range of double precision") !=
         std::string::npos ||
       message.find("overshoot") != std::string::npos || ExplainedRefusal(message));
 }

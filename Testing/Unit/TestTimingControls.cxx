@@ -703,3 +703,24 @@ TEST(TimingControls, ConstantSpeedWithKeysOneUlpApartStillWorks)
   EXPECT_NEAR(arrivals->GetValue(3), 2.0 * 2.0 / 3.0, 1e-9);
   EXPECT_NEAR(xAt(path, 1.0), 1.5, 1e-9);
 }
+
+TEST(TimingControls, ConstantSpeedOfAPointThatOverflowsNamesTheCause)
+{
+  // FuzzTransformInterpolator: a measured point near 1e308 that the keys move out of range.
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<lct_test::ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  addTranslations(path, { 0, 1 }, { 0, 1 });
+  vtkNew<vtkTransform> turned;
+  turned->RotateZ(90);
+  turned->Scale(4, 4, 4);
+  ASSERT_EQ(path->AddTransform(2.0, turned), 1);
+  path->ConstantSpeedOn();
+  ASSERT_EQ(path->SetConstantSpeedPoint(1e308, 0, 0), 1);
+  vtkNew<vtkMatrix4x4> m;
+  EXPECT_EQ(path->InterpolateTransform(1.0, m), 0);
+  EXPECT_NE(errors->Last.find("the measured point is out of the range of double precision"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_TRUE(m->IsIdentity());
+}
