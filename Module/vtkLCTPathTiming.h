@@ -28,10 +28,11 @@ namespace vtkLCTPathTiming
 {
 
 /// The sampling of the constant-speed table (lct/ArcLength.h): kIntervalsPerSegment equal
-/// intervals per key segment, each halved while the sum of its half chords exceeds its chord by
-/// more than kFlatness of it (a chord then misses at most ~kFlatness / 3 of its arc), at most
-/// kMaximumHalvings times, and never beyond kMaximumSamples samples in all (about 2 M
-/// evaluations, a few seconds; beyond it the intervals are left as they are).
+/// intervals per key segment (fewer, down to 1, for more than kMaximumSamples / 16 keys), each
+/// halved while the sum of its half chords exceeds its chord by more than kFlatness of it (a chord
+/// then misses at most ~kFlatness / 3 of its arc), at most kMaximumHalvings times, and never beyond
+/// kMaximumSamples samples in all (about 2 M evaluations, a few seconds; beyond it the intervals
+/// are left as they are).
 constexpr int kIntervalsPerSegment = 16;
 constexpr double kFlatness = 1e-5;
 constexpr int kMaximumHalvings = 12;
@@ -325,6 +326,9 @@ private:
       }
       return true;
     };
+    // The table stays within kMaximumSamples (plus one per key) however many keys there are.
+    const int intervals = static_cast<int>(
+      std::clamp<size_t>(kMaximumSamples / static_cast<size_t>(n - 1), 1, kIntervalsPerSegment));
     Point previous, p;
     if (!this->Sample(times[0], positionAt, previous))
     {
@@ -336,11 +340,10 @@ private:
     {
       this->KeySamples[i] = static_cast<int>(taus.size()) - 1;
       const double h = times[i + 1] - times[i];
-      for (int j = 1; j <= kIntervalsPerSegment; ++j)
+      for (int j = 1; j <= intervals; ++j)
       {
-        const double tau =
-          j == kIntervalsPerSegment ? times[i + 1] : times[i] + h * j / kIntervalsPerSegment;
-        if (j < kIntervalsPerSegment && !(tau > taus.back() && tau < times[i + 1]))
+        const double tau = j == intervals ? times[i + 1] : times[i] + h * j / intervals;
+        if (j < intervals && !(tau > taus.back() && tau < times[i + 1]))
         {
           continue; // keys a few ulps apart: no room for this sample
         }
