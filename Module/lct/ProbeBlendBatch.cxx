@@ -8,8 +8,11 @@
 #include <cmath>
 
 // The lane loops below are written for the auto-vectoriser; with GCC on x86-64 they are also
-// compiled for x86-64-v3 (AVX2, FMA) and picked at load time where the CPU has it.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// compiled for x86-64-v3 (AVX2, FMA) and picked at load time where the CPU has it. Not under the
+// sanitizers: the load-time choice is an ifunc resolver, which runs before ThreadSanitizer's
+// runtime is up (the TSan build's unit tests crashed at start).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) &&                             \
+  !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 #define LCT_LANES_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define LCT_LANES_CLONES

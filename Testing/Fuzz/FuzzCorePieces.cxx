@@ -10,6 +10,8 @@
 // SVD and symmetric eigensolver), so that a wrong branch is caught and round-off is not.
 #include "FuzzInput.h"
 
+#include "lct/AccurateMinors.h"
+
 #include "lct/Affine.h"
 #include "lct/Combination.h"
 #include "lct/Conditioning.h"
@@ -50,7 +52,9 @@ Eigen::Vector3d SingularValues(const Eigen::Matrix3d& a)
 /// two first), and refusing it would be a defect.
 bool Comfortable(const Eigen::Matrix3d& a, double condition)
 {
-  if (!AllFinite(a) || !(a.determinant() > 0.0))
+  // The sign from the accurate determinant: Eigen's rounded one can be positive for a reflection
+  // whose determinant is below its rounding (D32: det -8.5e-17 of an all-ones-like matrix).
+  if (!AllFinite(a) || !(lct::accurateDeterminant(a) > 0.0))
   {
     return false;
   }
