@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace lct
 {
@@ -357,7 +358,9 @@ void carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d&
   }
 }
 
-void carry(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i)
+} // namespace
+
+void carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i)
 {
   if (c.isDouble)
   {
@@ -368,8 +371,6 @@ void carry(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i)
     carryTyped(static_cast<const float*>(c.in), static_cast<float*>(c.out), c.isNormal, d, i);
   }
 }
-
-} // namespace
 
 ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
   const std::vector<Eigen::Vector3d>& centres,
@@ -548,101 +549,11 @@ bool storePoint(const PointMap& map, const Eigen::Vector3d& p, Real* out,
   }
   for (int c = 0; c < carriedCount; ++c)
   {
-    carry(carried[c], map.linearMinusIdentity, i);
+    carryVector(carried[c], map.linearMinusIdentity, i);
   }
   return true;
 }
 
-/// deformPoints for weights from slots where slot k is probe k, kProbeBatch points at a time
-/// (lct/ProbeBlendBatch.h); the same checks, in the same order, as the point-by-point loop.
-template <typename Real>
-DeformFailure deformBatched(const ProbeBlendSet& set, const ProbeBatchSet& batch,
-  const WeightSource& source, const Real* in, Real* out, const CarriedVectors* carried,
-  int carriedCount, std::int64_t begin, std::int64_t end)
-{
-  const int slots = source.slots;
-  const bool sumsToOne = source.normalization != WeightNormalization::None;
-  constexpr double kRealMax = static_cast<double>(std::numeric_limits<Real>::max());
-  ProbeBatchWeights weights;
-  ProbeBatchMaps maps;
-  double p[3][kProbeBatch], q[3][kProbeBatch];
-  for (std::int64_t first = begin; first < end; first += kProbeBatch)
-  {
-    // A point that fails ends the batch there: the points before it are deformed first, so the
-    // failure reported is the first one in point order, as in the point-by-point loop.
-    int count = static_cast<int>(std::min<std::int64_t>(kProbeBatch, end - first));
-    DeformFailure pending;
-    for (int j = 0; j < kProbeBatch; ++j)
-    {
-      const std::int64_t i = first + std::min(j, count - 1); // spare lanes repeat a point
-      bool finite = true;
-      for (int k = 0; k < slots; ++k)
-      {
-        const double w = source.floatWeights
-          ? static_cast<double>(source.floatWeights[i * slots + k])
-          : source.weights[i * slots + k];
-        weights[k][j] = w;
-        finite = finite && std::isfinite(w);
-      }
-      if (!finite && j < count)
-      {
-        pending = { Status::NonFinite, i };
-        count = j;
-        if (count == 0)
-        {
-          return pending;
-        }
-        --j; // fill this lane again with the last point kept
-        continue;
-      }
-      for (int r = 0; r < 3; ++r)
-      {
-        p[r][j] = static_cast<double>(in[3 * i + r]);
-      }
-    }
-    const int unnormalised = normalizeBatch(source.normalization, slots, count, weights);
-    if (unnormalised >= 0)
-    {
-      pending = { Status::InvalidArgument, first + unnormalised };
-      count = unnormalised;
-    }
-    const int failed = blendBatch(set, batch, weights, count, sumsToOne, maps);
-    if (failed >= 0)
-    {
-      pending = { Status::NumericalFailure, first + failed };
-      count = failed;
-    }
-    applyBatch(maps, p, q);
-    for (int j = 0; j < count; ++j)
-    {
-      const std::int64_t i = first + j;
-      // Finite in double and in Real (a float output can overflow where the double did not);
-      // a non-finite map makes q non-finite too.
-      if (!(std::abs(q[0][j]) <= kRealMax && std::abs(q[1][j]) <= kRealMax &&
-            std::abs(q[2][j]) <= kRealMax))
-      {
-        return { Status::OutOfRange, i };
-      }
-      for (int r = 0; r < 3; ++r)
-      {
-        out[3 * i + r] = static_cast<Real>(q[r][j]);
-      }
-      if (carriedCount > 0)
-      {
-        const PointMap map = maps.at(j);
-        for (int c = 0; c < carriedCount; ++c)
-        {
-          carry(carried[c], map.linearMinusIdentity, i);
-        }
-      }
-    }
-    if (!pending.ok())
-    {
-      return pending;
-    }
-  }
-  return {};
-}
 } // namespace
 
 template <typename Real>
@@ -654,7 +565,8 @@ DeformFailure deformPoints(const ProbeBlendSet& set, const WeightSource& source,
   if (fromSlots && !source.indices && source.slots == static_cast<int>(set.probes.size()) &&
     (source.weights || source.floatWeights) && prepareProbeBatch(set, batch))
   {
-    return deformBatched(set, batch, source, in, out, carried, carriedCount, begin, end);
+    return deformBatch(set, batch, source, in, out, std::is_same<Real, double>::value, carried,
+      carriedCount, begin, end);
   }
   if (fromSlots &&
     (source.slots <= 0 || !(source.weights || source.floatWeights) ||

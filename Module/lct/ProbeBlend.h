@@ -166,6 +166,11 @@ struct CarriedVectors
   bool isNormal = true;
 };
 
+/// Vector i of a carried array transformed by the blended linear part I + d as deformPoints
+/// does: normals by the cofactor, renormalised; other vectors by I + d; a point at rest (d = 0)
+/// keeps its vector bit for bit.
+VTKLCT_EXPORT void carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i);
+
 /// Deforms points [begin, end) of `in` (x y z interleaved) into `out`, and the carried arrays.
 /// Thread-safe for disjoint ranges. Stops at the first point that cannot be deformed: NonFinite
 /// (a NaN or Inf slot weight), InvalidArgument (a probe index out of range, or weights the

@@ -1,20 +1,26 @@
 /**
  * @file ProbeBlendBatch.h
- * @brief The probe blends of lct/ProbeBlend.h for kProbeBatch points at once, in a layout the
- *        compiler vectorises across points (structure of arrays, no branch or call per point
- *        in the hot loops; AVX2 + FMA where the CPU has them, by function multiversioning).
+ * @brief The probe blends of lct/ProbeBlend.h for kProbeBatch points at once, each point in one
+ *        lane of a SIMD vector (AVX2 + FMA where the CPU has them, chosen at load time).
  *
- * The batch computes the same maps as lct::blendAtPoint, for weights taken straight from the
- * point's slots (slot k = probe k): Polar (Kaji & Ochiai's phi(sum w psi(A)), about the
- * point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and DualQuaternion on rigid probes
- * (Kavan's DLB, whose dual parts are formed once per probe). The rotation exp of the Polar
- * blend uses the half-angle form of lct::expSO3MinusIdentity with sin(phi) / phi and
- * cos(phi) as Taylor polynomials in phi^2 for a turn of up to 2 pi (phi <= pi: both truncated
- * below 1e-17, so within a few ulps of std::sin / std::cos there); a point whose blended turn
- * exceeds 2 pi takes lct::expSO3MinusIdentity itself. The stretch exp of affine probes, a
- * point with one weight of exactly 1 (that probe's matrix, no exp) and all-zero weights are
- * handled per point as lct::blendAtPoint does, so the guarantees of lct/ProbeBlend.h
- * (exactness at rest, rigidity of a single rigid probe) hold unchanged.
+ * deformBatch is deformPoints' fast path for weights taken straight from the point's slots
+ * (slot k = probe k): one pass per block of points reads the weights and the points, normalises,
+ * blends, applies and stores, with every intermediate in registers (no per-point call, no
+ * allocation, no aliasing through memory). Blends: Polar (Kaji & Ochiai's phi(sum w psi(A)),
+ * about the point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and DualQuaternion (Kavan's
+ * DLB with the hemisphere check, dual parts formed once per probe; with stretch, "Polar+DQ":
+ * the rigid parts about c(p) and exp of the blended stretch log).
+ *
+ * The exps are evaluated in lanes: the rotation's by the half-angle form of
+ * lct::expSO3MinusIdentity with sin(phi) / phi and cos(phi) as Taylor polynomials in phi^2 (a
+ * turn of up to 2 pi, both truncated below 1e-17); the stretch's in the form E = exp(Y) - I, so a
+ * small stretch keeps its relative accuracy: Taylor of degree 10 on Y / 2^s with ||Y / 2^s||_F
+ * <= 1/8 (truncation below 2.3e-17 relative), then s squarings E <- 2E + E^2, s chosen per lane
+ * (a lane's result never depends on the other lanes, so a threaded run equals a serial one bit
+ * for bit). A lane whose blended turn exceeds 2 pi, or whose stretch log exceeds 16 in norm,
+ * takes lct::blendAtPoint itself. A point with one weight of exactly 1 takes that probe's
+ * matrix (no exp) and one with all weights 0 stays put, as in lct::blendAtPoint, so the
+ * guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a single rigid probe) hold.
  */
 #ifndef lct_ProbeBlendBatch_h
 #define lct_ProbeBlendBatch_h
@@ -26,67 +32,71 @@
 namespace lct
 {
 
-/// Points per batch.
-constexpr int kProbeBatch = 8;
+/// Points per block (the lanes of one vector of doubles).
+constexpr int kProbeBatch = 4;
 
 /// The most probes (slots) a batch takes.
 constexpr int kProbeBatchMaxProbes = 8;
 
-/// Probe data laid out for the batch, prepared once per execution.
+/// Probe data laid out for the lanes, prepared once per call.
 struct ProbeBatchSet
 {
   int probes = 0;
   BlendMode mode = BlendMode::Polar;
   bool allRigid = true;
   double rotation[3][kProbeBatchMaxProbes];            ///< Polar: rotation part of psi(A_k)
+  double stretch[6][kProbeBatchMaxProbes];             ///< log S_k as a SymmetricVector
   double linearMinusIdentity[9][kProbeBatchMaxProbes]; ///< row-major L_k - I
   double translation[3][kProbeBatchMaxProbes];
   double centre[3][kProbeBatchMaxProbes];
   double quaternion[4][kProbeBatchMaxProbes]; ///< DualQuaternion: (w, x, y, z)
   double dual[4][kProbeBatchMaxProbes];       ///< DualQuaternion: (0, t_k) q_k
+  /// DualQuaternion with stretch: the dual part of the rigid part about a centre c is
+  /// dual_k + dualPerCentre_k c, with (0, (L_k - I) c) q_k = dualPerCentre_k c (row-major 4 x 3).
+  double dualPerCentre[12][kProbeBatchMaxProbes];
   /// DualQuaternion: -1 where probe k's rotation is in the other hemisphere than probe p's
   /// (Kavan's check, against the point's heaviest probe p), else 1: [k][p].
   double hemisphere[kProbeBatchMaxProbes][kProbeBatchMaxProbes];
 };
 
-/// Whether `set` can be blended in batches (Polar, Linear, or DualQuaternion on rigid probes;
-/// at most kProbeBatchMaxProbes probes), and if so its batch layout.
+/// Whether `set` can be blended in lanes (Polar, Linear or DualQuaternion, at most
+/// kProbeBatchMaxProbes probes), and if so its layout.
 VTKLCT_EXPORT bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch);
 
-/// The weights of a batch: probe k's weight at point j is weights[k][j] (normalised or raw).
+/// Deforms points [begin, end) as lct::deformPoints does for slot weights with slot k = probe
+/// k, `source.slots` == the number of probes and float or double weights: the same maps to a
+/// few ulps, the same checks and the same first failing point. `in`/`out` are float or double
+/// (`doublePoints`).
+VTKLCT_EXPORT DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
+  const WeightSource& source, const void* in, void* out, bool doublePoints,
+  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end);
+
+/// The weights of a block: probe k's weight at point j is weights[k][j].
 using ProbeBatchWeights = double[kProbeBatchMaxProbes][kProbeBatch];
 
-/// The blended maps of a batch, one lane per point: p' = p + d (p - centre) + shift with d
-/// row-major (lct::PointMap, laid out by lane).
+/// The maps of a block, one lane per point (lct::PointMap laid out by lane).
 struct ProbeBatchMaps
 {
   double d[9][kProbeBatch];
   double shift[3][kProbeBatch];
   double centre[3][kProbeBatch];
-  double halfAngle2[kProbeBatch]; ///< Polar: (theta / 2)^2 of the blended turn
-  double total[kProbeBatch];      ///< the weights' sum (DualQuaternion: -1 where they cancel)
-  int pivot[kProbeBatch];         ///< DualQuaternion: the heaviest probe
 
   /// Lane j as a PointMap.
   PointMap at(int j) const;
 };
 
-/// Normalises the raw weights of `count` points in place as lct::normalizeWeights does each
-/// point's; returns the first point whose weights it cannot divide by (Linear: a sum that is
-/// not positive and finite, with weights not all zero), or -1.
-VTKLCT_EXPORT int normalizeBatch(
-  WeightNormalization normalization, int probes, int count, ProbeBatchWeights& weights);
-
-/// The maps of `count` <= kProbeBatch points with normalised `weights`: the maps
-/// lct::blendAtPoint gives, to rounding. `sumsToOne`: the weights were normalised (Linear mode
-/// adds (sum w - 1) I otherwise). Returns the first point whose blend fails (a DualQuaternion
-/// blend whose rotations cancel), or -1. Lanes past `count` are left unspecified.
+/// The lanes' blend on its own, for tests: the maps of `count` <= kProbeBatch points whose
+/// `weights` are already normalised (`sumsToOne`; Linear mode adds (sum w - 1) I otherwise).
+/// Returns the first point whose blend fails (a DualQuaternion blend whose rotations cancel),
+/// or -1. Lanes past `count` are left unspecified.
 VTKLCT_EXPORT int blendBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const ProbeBatchWeights& weights, int count, bool sumsToOne, ProbeBatchMaps& maps);
 
-/// q = p + d (p - centre) + shift in every lane.
-VTKLCT_EXPORT void applyBatch(
-  const ProbeBatchMaps& maps, const double (&p)[3][kProbeBatch], double (&q)[3][kProbeBatch]);
+/// The lanes' weight normalisation on its own, for tests: normalises the raw weights of `count`
+/// points in place as lct::normalizeWeights does, bit for bit; returns the first point it
+/// cannot divide by (Linear: a sum that is not positive and finite, weights not all zero), or -1.
+VTKLCT_EXPORT int normalizeBatch(
+  WeightNormalization normalization, int probes, int count, ProbeBatchWeights& weights);
 
 } // namespace lct
 

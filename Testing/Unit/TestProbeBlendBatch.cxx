@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace
@@ -73,12 +74,7 @@ TEST(ProbeBlendBatch, EqualsThePointByPointBlendForEveryModeAndProbeCount)
         {
           const lct::ProbeBlendSet set = probes(r, n, affine, mode, maxTurn);
           lct::ProbeBatchSet batch;
-          const bool supported = lct::prepareProbeBatch(set, batch);
-          ASSERT_EQ(supported, mode != lct::BlendMode::DualQuaternion || set.allRigid);
-          if (!supported)
-          {
-            continue;
-          }
+          ASSERT_TRUE(lct::prepareProbeBatch(set, batch));
           for (int trial = 0; trial < 8; ++trial)
           {
             lct::ProbeBatchWeights w;
@@ -150,7 +146,7 @@ TEST(ProbeBlendBatch, LinearNormalisationMatchesThePointByPointOne)
   {
     for (int k = 0; k < 4; ++k)
     {
-      w[k][j] = j == 3 ? 0.0 : r.Uniform(0.0, 2.0);
+      w[k][j] = j == 3 ? 0.0 : r.Uniform(0.0, 2.0); // lane 3: all zero
     }
   }
   lct::ProbeBatchWeights batch = {};
@@ -161,7 +157,7 @@ TEST(ProbeBlendBatch, LinearNormalisationMatchesThePointByPointOne)
       batch[k][j] = w[k][j];
     }
   }
-  ASSERT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, 8, batch), -1);
+  ASSERT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, lct::kProbeBatch, batch), -1);
   for (int j = 0; j < lct::kProbeBatch; ++j)
   {
     double row[4] = { w[0][j], w[1][j], w[2][j], w[3][j] };
@@ -172,9 +168,193 @@ TEST(ProbeBlendBatch, LinearNormalisationMatchesThePointByPointOne)
     }
   }
   // A negative sum, and an infinite one, are refused at their point.
-  batch[0][5] = -100.0;
-  EXPECT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, 8, batch), 5);
-  batch[0][5] = 1.0;
-  batch[1][2] = INFINITY;
-  EXPECT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, 8, batch), 2);
+  batch[0][2] = -100.0;
+  EXPECT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, lct::kProbeBatch, batch), 2);
+  batch[0][2] = 1.0;
+  batch[1][1] = INFINITY;
+  EXPECT_EQ(lct::normalizeBatch(lct::WeightNormalization::Linear, 4, lct::kProbeBatch, batch), 1);
+}
+
+namespace
+{
+/// What lct::deformPoints' point-by-point loop gives at point i: the map's image of p.
+lct::Status referencePoint(const lct::ProbeBlendSet& set, lct::WeightNormalization normalization,
+  const double* raw, int n, const Eigen::Vector3d& p, Eigen::Vector3d& q, Eigen::Matrix3d& d)
+{
+  std::vector<double> row(raw, raw + n);
+  for (double w : row)
+  {
+    if (!std::isfinite(w))
+    {
+      return lct::Status::NonFinite;
+    }
+  }
+  if (lct::normalizeWeights(normalization, row.data(), n) != lct::Status::Ok)
+  {
+    return lct::Status::InvalidArgument;
+  }
+  lct::PointMap map;
+  lct::Status s = lct::blendAtPoint(set, row.data(), nullptr, n, map);
+  if (normalization == lct::WeightNormalization::None && set.mode == lct::BlendMode::Linear &&
+    s == lct::Status::Ok)
+  {
+    // blendAtPoint blends as for normalised weights; deformPoints adds (sum w - 1) I.
+    double total = 0.0;
+    for (double w : row)
+    {
+      total += w;
+    }
+    int nonZero = 0;
+    bool single = false;
+    for (double w : row)
+    {
+      nonZero += w != 0.0;
+      single = single || w == 1.0;
+    }
+    if (total != 0.0 && !(nonZero == 1 && single))
+    {
+      map.linearMinusIdentity.diagonal().array() += total - 1.0;
+    }
+  }
+  q = map.apply(p);
+  d = map.linearMinusIdentity;
+  return s;
+}
+
+template <typename Real>
+void checkDeformation(lct::BlendMode mode, bool affine, int n,
+  lct::WeightNormalization normalization, RandomTransforms& r)
+{
+  const lct::ProbeBlendSet set = probes(r, n, affine, mode, 9.0);
+  constexpr int kPoints = 203; // not a multiple of the block
+  std::vector<Real> in(3 * kPoints), normalsIn(3 * kPoints);
+  std::vector<double> weights(static_cast<std::size_t>(kPoints * n));
+  const double spread = normalization == lct::WeightNormalization::None ? 12.0 : 1.0;
+  for (int i = 0; i < kPoints; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      in[3 * i + c] = static_cast<Real>(r.Uniform(-10.0, 10.0));
+      normalsIn[3 * i + c] = static_cast<Real>(r.Uniform(-1.0, 1.0));
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      // Zeros, one weight of 1, all zeros, and (unnormalised) stretches beyond the lanes' range.
+      const int kind = i % 7;
+      weights[i * n + k] = kind == 0 ? (k == i % n ? 1.0 : 0.0)
+        : kind == 1                  ? 0.0
+        : r.Uniform(0.0, 1.0) < 0.2  ? 0.0
+                                     : spread * r.Uniform(0.05, 1.0);
+    }
+  }
+  lct::WeightSource source;
+  source.kind = lct::WeightSource::Kind::Slots;
+  source.normalization = normalization;
+  source.weights = weights.data();
+  source.slots = n;
+  std::vector<Real> out(in.size()), normalsOut(in.size());
+  lct::CarriedVectors normals;
+  normals.in = normalsIn.data();
+  normals.out = normalsOut.data();
+  normals.isDouble = std::is_same<Real, double>::value;
+  normals.isNormal = true;
+  const lct::DeformFailure whole =
+    lct::deformPoints(set, source, in.data(), out.data(), &normals, 1, 0, kPoints);
+  // The reference's first failure, if any (DualQuaternion blends can cancel).
+  std::int64_t firstFailure = -1;
+  const double tolerance = std::is_same<Real, double>::value ? 1e-12 : 4e-7;
+  for (int i = 0; i < kPoints && firstFailure < 0; ++i)
+  {
+    const Eigen::Vector3d p(in[3 * i], in[3 * i + 1], in[3 * i + 2]);
+    Eigen::Vector3d q;
+    Eigen::Matrix3d d;
+    if (referencePoint(set, normalization, &weights[i * n], n, p, q, d) != lct::Status::Ok)
+    {
+      firstFailure = i;
+      break;
+    }
+    const Eigen::Vector3d got(out[3 * i], out[3 * i + 1], out[3 * i + 2]);
+    EXPECT_LE((got - q).norm(), tolerance * (1.0 + q.norm()))
+      << "mode " << static_cast<int>(mode) << " affine " << affine << " probes " << n
+      << " point " << i;
+  }
+  EXPECT_EQ(whole.point, firstFailure);
+  if (!whole.ok())
+  {
+    return;
+  }
+  // Any split of the range (threads) gives the same bits.
+  for (const int split : { 1, 2, 3, 5, 101, 202 })
+  {
+    std::vector<Real> parts(in.size()), partNormals(in.size());
+    lct::CarriedVectors c = normals;
+    c.out = partNormals.data();
+    ASSERT_TRUE(lct::deformPoints(set, source, in.data(), parts.data(), &c, 1, 0, split).ok());
+    ASSERT_TRUE(
+      lct::deformPoints(set, source, in.data(), parts.data(), &c, 1, split, kPoints).ok());
+    EXPECT_EQ(parts, out) << "split at " << split;
+    EXPECT_EQ(partNormals, normalsOut) << "split at " << split;
+  }
+}
+} // namespace
+
+TEST(ProbeBlendBatch, DeformsAsThePointByPointBlendAndAnySplitGivesTheSameBits)
+{
+  RandomTransforms r(99);
+  for (const lct::BlendMode mode :
+    { lct::BlendMode::Polar, lct::BlendMode::Linear, lct::BlendMode::DualQuaternion })
+  {
+    for (const bool affine : { false, true })
+    {
+      for (const int n : { 1, 3, 4, 8 })
+      {
+        for (const auto normalization : { lct::WeightNormalization::Linear,
+               lct::WeightNormalization::None, lct::WeightNormalization::Softmax })
+        {
+          checkDeformation<double>(mode, affine, n, normalization, r);
+          checkDeformation<float>(mode, affine, n, normalization, r);
+        }
+      }
+    }
+  }
+}
+
+TEST(ProbeBlendBatch, ReportsTheFirstFailingPointWithItsCause)
+{
+  RandomTransforms r(5);
+  const lct::ProbeBlendSet set = probes(r, 2, false, lct::BlendMode::Polar, 1.0);
+  constexpr int kPoints = 40;
+  std::vector<double> in(3 * kPoints, 1.0), out(3 * kPoints), weights(2 * kPoints, 0.5);
+  lct::WeightSource source;
+  source.kind = lct::WeightSource::Kind::Slots;
+  source.weights = weights.data();
+  source.slots = 2;
+  const auto run = [&]() {
+    return lct::deformPoints(set, source, in.data(), out.data(), nullptr, 0, 0, kPoints);
+  };
+  EXPECT_TRUE(run().ok());
+  weights[2 * 23] = NAN; // point 23
+  weights[2 * 22] = -5.0; // point 22: a negative sum, earlier
+  lct::DeformFailure f = run();
+  EXPECT_EQ(f.point, 22);
+  EXPECT_EQ(f.status, lct::Status::InvalidArgument);
+  weights[2 * 22] = 0.5;
+  f = run();
+  EXPECT_EQ(f.point, 23);
+  EXPECT_EQ(f.status, lct::Status::NonFinite);
+  weights[2 * 23] = 0.5;
+  // Point 30 overflows: unnormalised LBS scales it by the weights' sum, 3.5.
+  const lct::ProbeBlendSet linear = probes(r, 2, false, lct::BlendMode::Linear, 1.0);
+  source.normalization = lct::WeightNormalization::None;
+  in[3 * 30] = 1e308;
+  weights[2 * 30] = 3.0;
+  f = lct::deformPoints(linear, source, in.data(), out.data(), nullptr, 0, 0, kPoints);
+  EXPECT_EQ(f.point, 30);
+  EXPECT_EQ(f.status, lct::Status::OutOfRange);
+  // In float, a point that fits in double but not in float overflows too.
+  std::vector<float> inFloat(3 * kPoints, 1.0f), outFloat(3 * kPoints);
+  inFloat[3 * 30] = 3e38f;
+  f = lct::deformPoints(linear, source, inFloat.data(), outFloat.data(), nullptr, 0, 0, kPoints);
+  EXPECT_EQ(f.point, 30);
+  EXPECT_EQ(f.status, lct::Status::OutOfRange);
 }
