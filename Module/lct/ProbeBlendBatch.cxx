@@ -109,28 +109,37 @@ struct LaneFlags
 };
 
 /// sin(phi) / phi = sum (-1)^n x^n / (2n + 1)! (n <= 14) and cos(phi) = sum (-1)^n x^n / (2n)!
-/// (n <= 15) for x = phi^2 <= pi^2, by Horner; the first omitted terms, x^15 / 31! and
-/// x^16 / 32! at x = pi^2, are 1e-19 and 1e-20.
+/// (n <= 15) for x = phi^2 <= pi^2; the first omitted terms, x^15 / 31! and x^16 / 32! at
+/// x = pi^2, are 1e-19 and 1e-20. Estrin's scheme (pairs, then powers x^2, x^4, x^8): a chain of
+/// four multiply-adds instead of Horner's fifteen, which the lanes would wait on.
 LCT_LANE void sincAndCos(Vec x, Vec& sinc, Vec& cosine)
 {
-  static constexpr double kSin[15] = { 1.0, -0.16666666666666666, 0.008333333333333333,
+  static constexpr double kSin[16] = { 1.0, -0.16666666666666666, 0.008333333333333333,
     -0.0001984126984126984, 2.7557319223985893e-06, -2.505210838544172e-08, 1.6059043836821613e-10,
     -7.647163731819816e-13, 2.8114572543455206e-15, -8.22063524662433e-18, 1.9572941063391263e-20,
-    -3.868170170630684e-23, 6.446950284384474e-26, -9.183689863795546e-29, 1.1309962886447716e-31 };
+    -3.868170170630684e-23, 6.446950284384474e-26, -9.183689863795546e-29, 1.1309962886447716e-31,
+    0.0 };
   static constexpr double kCos[16] = { 1.0, -0.5, 0.041666666666666664, -0.001388888888888889,
     2.48015873015873e-05, -2.755731922398589e-07, 2.08767569878681e-09, -1.1470745597729725e-11,
     4.779477332387385e-14, -1.5619206968586225e-16, 4.110317623312165e-19, -8.896791392450574e-22,
     1.6117375710961184e-24, -2.4795962632247976e-27, 3.279889237069838e-30,
     -3.7699876288159054e-33 };
-  Vec s = splat(kSin[14]), c = splat(kCos[15]);
-  for (int n = 14; n >= 1; --n)
-  {
-    // Two independent chains interleaved: each waits on its own multiply only.
-    s = kSin[n - 1] + x * s;
-    c = kCos[n] + x * c;
-  }
-  sinc = s;
-  cosine = kCos[0] + x * c;
+  const Vec x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+  const auto estrin = [&](const double (&c)[16]) {
+    Vec pair[8];
+    for (int i = 0; i < 8; ++i)
+    {
+      pair[i] = c[2 * i] + c[2 * i + 1] * x;
+    }
+    Vec quad[4];
+    for (int i = 0; i < 4; ++i)
+    {
+      quad[i] = pair[2 * i] + pair[2 * i + 1] * x2;
+    }
+    return (quad[0] + quad[1] * x4) + (quad[2] + quad[3] * x4) * x8;
+  };
+  sinc = estrin(kSin);
+  cosine = estrin(kCos);
 }
 
 /// R - I of the rotation log `rot` (lct::expSO3MinusIdentity in lanes); lanes whose turn
@@ -193,24 +202,29 @@ LCT_LANE void stretchMinusIdentity(const Vec (&y)[6], Vec (&e)[6], Mask& redo)
   {
     z[i] = select(inRange, scale * y[i], splat(0.0));
   }
-  // P = I + Z/10, P = I + Z P / k for k = 9 .. 2, E = Z P.
-  static constexpr double kInverse[11] = { 0.0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6,
-    1.0 / 7, 1.0 / 8, 1.0 / 9, 1.0 / 10 };
-  Vec p[6];
+  // sum_{k=1..10} Z^k / k! by Paterson and Stockmeyer: with Z^2, Z^3, Z^4,
+  // (c1 Z + .. + c4 Z^4) + Z^4 (c5 Z + .. + c8 Z^4) + Z^8 (c9 Z + c10 Z^2): six products, four
+  // deep, where Horner takes ten in a row (the lanes would wait on each).
+  static constexpr double c[11] = { 1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720,
+    1.0 / 5040, 1.0 / 40320, 1.0 / 362880, 1.0 / 3628800 };
+  Vec z2[6], z3[6], z4[6], z8[6];
+  symmetricProduct(z, z, z2);
+  symmetricProduct(z, z2, z3);
+  symmetricProduct(z2, z2, z4);
+  symmetricProduct(z4, z4, z8);
+  Vec middle[6], last[6];
   for (int i = 0; i < 6; ++i)
   {
-    p[i] = z[i] * kInverse[10] + (i < 3 ? 1.0 : 0.0);
+    middle[i] = c[5] * z[i] + c[6] * z2[i] + c[7] * z3[i] + c[8] * z4[i];
+    last[i] = c[9] * z[i] + c[10] * z2[i];
   }
-  for (int k = 9; k >= 2; --k)
+  Vec z4Middle[6], z8Last[6];
+  symmetricProduct(z4, middle, z4Middle);
+  symmetricProduct(z8, last, z8Last);
+  for (int i = 0; i < 6; ++i)
   {
-    Vec zp[6];
-    symmetricProduct(z, p, zp);
-    for (int i = 0; i < 6; ++i)
-    {
-      p[i] = zp[i] * kInverse[k] + (i < 3 ? 1.0 : 0.0);
-    }
+    e[i] = (z[i] + c[2] * z2[i] + c[3] * z3[i] + c[4] * z4[i]) + z4Middle[i] + z8Last[i];
   }
-  symmetricProduct(z, p, e);
   const double most = std::max({ squarings[0], squarings[1], squarings[2], squarings[3] });
   for (int i = 0; i < static_cast<int>(most); ++i)
   {
