@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -268,7 +269,10 @@ void checkDeformation(lct::BlendMode mode, bool affine, int n,
     const Eigen::Vector3d p(in[3 * i], in[3 * i + 1], in[3 * i + 2]);
     Eigen::Vector3d q;
     Eigen::Matrix3d d;
-    if (referencePoint(set, normalization, &weights[i * n], n, p, q, d) != lct::Status::Ok)
+    // A map that fails, or a point that does not fit in Real (a float output can overflow
+    // where the double did not), stops deformPoints there.
+    if (referencePoint(set, normalization, &weights[i * n], n, p, q, d) != lct::Status::Ok ||
+      !(q.cwiseAbs().maxCoeff() <= static_cast<double>(std::numeric_limits<Real>::max())))
     {
       firstFailure = i;
       break;
