@@ -26,6 +26,12 @@ namespace lct
 /// The largest accepted sigma_max / sigma_min of a linear part (see above).
 constexpr double kMaxConditionNumber = 1e13;
 
+/// The largest rotation angle (radians) of a log accepted by either parametrisation, as a
+/// reference or (MatrixLog) as an eigenvalue's imaginary part: beyond it a wound angle keeps
+/// fewer than 7 digits below a turn (ulp(1e9) ~ 1e-7), and the exp of a general 3x3 log with
+/// eigenvalues +-i theta is only accurate to ~eps theta.
+constexpr double kMaxRotationWinding = 1e9;
+
 /// Below this condition number the closed forms in the original basis (Kaji & Ochiai App. B) are
 /// accurate to ~1e-14; above it the eigen/singular-vector branches take over (measured: the
 /// Newton form of log loses eps cond^2, 2.7e-13 at cond 100, 2.5e-11 at 1e3).

@@ -120,6 +120,20 @@ BlockFunction blockFunction(
       return out;
     }
   }
+  if (f == ScalarFunction::Exp)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      // A turn wound beyond kMaxRotationWinding: the eigenvalues carry the angle to ~eps theta,
+      // and the result would come back neither orthogonal nor the inverse of exp(-L) (found by
+      // FuzzLogTransform: theta = 8e14 gave a "rotation" with rows of norm 1.06).
+      if (std::abs(nodes[i].imag()) > kMaxRotationWinding)
+      {
+        out.status = Status::InaccurateResult;
+        return out;
+      }
+    }
+  }
   if (f != ScalarFunction::Exp)
   {
     for (int i = 0; i < 3; ++i)

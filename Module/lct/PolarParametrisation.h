@@ -15,6 +15,7 @@
 
 #include "vtkLCTModule.h"
 
+#include "lct/Conditioning.h" // kMaxRotationWinding, the largest |rotation reference|
 #include "lct/LogCoords.h"
 #include "lct/Status.h"
 
@@ -22,10 +23,6 @@
 
 namespace lct
 {
-
-/// The largest |rotation reference| accepted (radians): beyond it a wound angle keeps fewer
-/// than 7 digits below a turn (ulp(1e9) ~ 1e-7).
-constexpr double kMaxRotationWinding = 1e9;
 
 /// psi(M). Fails with NonFinite (M or the reference), NotAffine, NegativeDeterminant, Singular,
 /// IllConditioned (lct/Conditioning.h) or OutOfRange (a subnormal stretch, or a reference wound

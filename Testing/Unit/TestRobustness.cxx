@@ -721,6 +721,41 @@ vtkNew<vtkMatrix4x4> d19Key(int k)
 const double kD19Times[3] = { 0.0, 2.0, 3.0 };
 } // namespace
 
+TEST(FuzzFindings, D33MatrixLogExpOfATurnWoundBeyondTheLimitIsRefused)
+{
+  // regression-D33-*: MatrixLog coordinates whose rotation part is (5.6e14, 1e8, 5.6e14), a turn
+  // of 8e14 rad, were accepted; their exp came back with rows of norm 1.06 (the eigenvalues
+  // +-8e14 i carry the angle only to ~0.1 rad), and Inverse() handed out exp(-c), which is not
+  // its inverse (m m^-1 had 1.1 on the diagonal). Such a log is now refused with an error and
+  // the state kept; a turn of 1e8 rad, within kMaxRotationWinding, still inverts to 1e-7.
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(t->SetParametrisationToMatrixLog(), 1);
+  const double wound[12] = { -4, 1, -4, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0,
+    0, 0 };
+  const vtkMTimeType mtime = t->GetMTime();
+  EXPECT_EQ(t->SetLogCoordinates(wound), 0);
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(contains(errors->Last, "cannot be computed accurately")) << errors->Last;
+  EXPECT_EQ(t->GetMTime(), mtime);
+  double kept[12];
+  t->GetLogCoordinates(kept);
+  for (double c : kept)
+  {
+    EXPECT_EQ(c, 0.0);
+  }
+  // The same scaled into the accepted range: exp(c) exp(-c) = I to the angle's own precision.
+  const double turn = 1e8 / std::sqrt(2.0);
+  const double within[12] = { -4, 1, -4, turn, 0.5, turn, 0.1, -0.2, 0.05, 0, 0, 0 };
+  ASSERT_EQ(t->SetLogCoordinates(within), 1) << errors->Last;
+  const Eigen::Matrix4d m = lct_test::fromVtk(t->GetMatrix());
+  t->Inverse();
+  const Eigen::Matrix4d mi = lct_test::fromVtk(t->GetMatrix());
+  EXPECT_LT((m * mi - Eigen::Matrix4d::Identity()).norm(), 1e-6);
+  EXPECT_EQ(errors->Count, 1) << errors->Last;
+}
+
 TEST(FuzzFindings, D19KeysWhoseCurveNeedsAMissingLogAreRefused)
 {
   // lct-render accepted the cube track and stopped mid-render ("interpolating props.cube at
