@@ -562,8 +562,11 @@ DeformFailure deformPoints(const ProbeBlendSet& set, const WeightSource& source,
 {
   const bool fromSlots = source.kind == WeightSource::Kind::Slots;
   ProbeBatchSet batch;
-  if (fromSlots && !source.indices && source.slots == static_cast<int>(set.probes.size()) &&
-    (source.weights || source.floatWeights) && prepareProbeBatch(set, batch))
+  const bool batchable = fromSlots
+    ? !source.indices && source.slots == static_cast<int>(set.probes.size()) &&
+      (source.weights || source.floatWeights)
+    : source.radii != nullptr;
+  if (batchable && prepareProbeBatch(set, batch))
   {
     return deformBatch(set, batch, source, in, out, std::is_same<Real, double>::value, carried,
       carriedCount, begin, end);

@@ -221,8 +221,10 @@ DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const WeightSource& source, const void* in, void* out, bool doublePoints,
   const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end)
 {
-  if (source.kind != WeightSource::Kind::Slots || source.indices ||
-    source.slots != batch.probes || !(source.weights || source.floatWeights))
+  const bool fromSlots = source.kind == WeightSource::Kind::Slots;
+  if (fromSlots ? (source.indices || source.slots != batch.probes ||
+                    !(source.weights || source.floatWeights))
+                : !source.radii)
   {
     return { Status::InvalidArgument, begin };
   }

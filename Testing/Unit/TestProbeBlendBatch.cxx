@@ -222,9 +222,31 @@ lct::Status referencePoint(const lct::ProbeBlendSet& set, lct::WeightNormalizati
   return s;
 }
 
+/// Raw distance weights written out from their definition (vtkProbeDeformerLCT.h): r / d^p, or
+/// ((r - d) / r)^p within r; a point on a centre takes that probe alone.
+void distanceWeights(const lct::ProbeBlendSet& set, lct::WeightSource::Kind kind,
+  const std::vector<double>& radii, double exponent, const Eigen::Vector3d& p, double* w)
+{
+  const int n = static_cast<int>(set.probes.size());
+  bool onCentre = false;
+  for (int k = 0; k < n; ++k)
+  {
+    const double d = (p - set.probes[k].centre).norm();
+    onCentre = onCentre || d == 0.0;
+    w[k] = kind == lct::WeightSource::Kind::InverseDistance
+      ? radii[k] / std::pow(d, exponent)
+      : (d <= radii[k] ? std::pow((radii[k] - d) / radii[k], exponent) : 0.0);
+  }
+  for (int k = 0; onCentre && kind == lct::WeightSource::Kind::InverseDistance && k < n; ++k)
+  {
+    w[k] = (p - set.probes[k].centre).norm() == 0.0 ? 1.0 : 0.0;
+  }
+}
+
 template <typename Real>
 void checkDeformation(lct::BlendMode mode, bool affine, int n,
-  lct::WeightNormalization normalization, RandomTransforms& r)
+  lct::WeightNormalization normalization, RandomTransforms& r,
+  lct::WeightSource::Kind weightKind = lct::WeightSource::Kind::Slots, double exponent = 1.0)
 {
   const lct::ProbeBlendSet set = probes(r, n, affine, mode, 9.0);
   constexpr int kPoints = 203; // not a multiple of the block
@@ -249,10 +271,36 @@ void checkDeformation(lct::BlendMode mode, bool affine, int n,
     }
   }
   lct::WeightSource source;
-  source.kind = lct::WeightSource::Kind::Slots;
+  source.kind = weightKind;
   source.normalization = normalization;
   source.weights = weights.data();
   source.slots = n;
+  std::vector<double> radii(static_cast<std::size_t>(n));
+  if (weightKind != lct::WeightSource::Kind::Slots)
+  {
+    // Weights from the distances to the probes' centres; every 9th point on a centre.
+    source.weights = nullptr;
+    source.slots = 0;
+    source.radii = radii.data();
+    source.exponent = exponent;
+    for (int k = 0; k < n; ++k)
+    {
+      radii[k] = r.Uniform(4.0, 14.0);
+    }
+    for (int i = 0; i < kPoints; ++i)
+    {
+      if (i % 9 == 4)
+      {
+        const Eigen::Vector3d& c = set.probes[i % n].centre;
+        for (int k = 0; k < 3; ++k)
+        {
+          in[3 * i + k] = static_cast<Real>(c[k]);
+        }
+      }
+      const Eigen::Vector3d p(in[3 * i], in[3 * i + 1], in[3 * i + 2]);
+      distanceWeights(set, weightKind, radii, exponent, p, &weights[i * n]);
+    }
+  }
   std::vector<Real> out(in.size()), normalsOut(in.size());
   lct::CarriedVectors normals;
   normals.in = normalsIn.data();
@@ -317,6 +365,14 @@ TEST(ProbeBlendBatch, DeformsAsThePointByPointBlendAndAnySplitGivesTheSameBits)
         {
           checkDeformation<double>(mode, affine, n, normalization, r);
           checkDeformation<float>(mode, affine, n, normalization, r);
+          for (const double exponent : { 1.0, 2.0, 1.5 })
+          {
+            for (const auto kind : { lct::WeightSource::Kind::InverseDistance,
+                   lct::WeightSource::Kind::Cutoff })
+            {
+              checkDeformation<double>(mode, affine, n, normalization, r, kind, exponent);
+            }
+          }
         }
       }
     }
