@@ -219,7 +219,8 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
 
 DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const WeightSource& source, const void* in, void* out, bool doublePoints,
-  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end)
+  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end,
+  int lanes)
 {
   const bool fromSlots = source.kind == WeightSource::Kind::Slots;
   if (fromSlots ? (source.indices || source.slots != batch.probes ||
@@ -228,9 +229,11 @@ DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   {
     return { Status::InvalidArgument, begin };
   }
-#if LCT_WIDE_LANES
+#if !LCT_WIDE_LANES
+  (void)lanes;
+#else
   static const bool wide = hasWideLanes();
-  if (wide)
+  if (wide && lanes != 4)
   {
     return lanes8::deformLanes(
       set, batch, source, in, out, doublePoints, carried, carriedCount, begin, end);

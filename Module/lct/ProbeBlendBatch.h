@@ -63,13 +63,15 @@ struct ProbeBatchSet
 /// kProbeBatchMaxProbes probes), and if so its layout.
 VTKLCT_EXPORT bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch);
 
-/// Deforms points [begin, end) as lct::deformPoints does for slot weights with slot k = probe
-/// k, `source.slots` == the number of probes and float or double weights: the same maps to a
-/// few ulps, the same checks and the same first failing point. `in`/`out` are float or double
-/// (`doublePoints`).
+/// Deforms points [begin, end) as lct::deformPoints does for distance weights, or for slot
+/// weights with slot k = probe k, `source.slots` == the number of probes and float or double
+/// weights: the same maps to a few ulps, the same checks and the same first failing point.
+/// `in`/`out` are float or double (`doublePoints`). `lanes`: 0 for the widest the CPU runs
+/// (8 with AVX-512, else 4), 4 to take 4 lanes whatever the CPU (tests compare the two).
 VTKLCT_EXPORT DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const WeightSource& source, const void* in, void* out, bool doublePoints,
-  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end);
+  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end,
+  int lanes = 0);
 
 /// The weights of a block: probe k's weight at point j is weights[k][j].
 using ProbeBatchWeights = double[kProbeBatchMaxProbes][kProbeBatch];
