@@ -1,26 +1,28 @@
 /**
  * @file ProbeBlendBatch.h
- * @brief The probe blends of lct/ProbeBlend.h for kProbeBatch points at once, each point in one
- *        lane of a SIMD vector (AVX2 + FMA where the CPU has them, chosen at load time).
+ * @brief The probe blends of lct/ProbeBlend.h for a block of points at once, each point in one
+ *        lane of a SIMD vector: 4 lanes (AVX2 + FMA where the CPU has them, chosen at load time)
+ *        or, on CPUs with AVX-512, 8 lanes (chosen at run time).
  *
- * deformBatch is deformPoints' fast path for weights taken straight from the point's slots
- * (slot k = probe k): one pass per block of points reads the weights and the points, normalises,
- * blends, applies and stores, with every intermediate in registers (no per-point call, no
- * allocation, no aliasing through memory). Blends: Polar (Kaji & Ochiai's phi(sum w psi(A)),
- * about the point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and DualQuaternion (Kavan's
- * DLB with the hemisphere check, dual parts formed once per probe; with stretch, "Polar+DQ":
- * the rigid parts about c(p) and exp of the blended stretch log).
+ * deformBatch is deformPoints' fast path for distance weights and for weights taken straight
+ * from the point's slots (slot k = probe k): one pass per block of points reads the weights and
+ * the points, normalises, blends, applies and stores, with every intermediate in registers (no
+ * per-point call, no allocation, no aliasing through memory). Blends: Polar (Kaji & Ochiai's
+ * phi(sum w psi(A)), about the point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and
+ * DualQuaternion (Kavan's DLB with the hemisphere check, dual parts formed once per probe; with
+ * stretch, "Polar+DQ": the rigid parts about c(p) and exp of the blended stretch log).
  *
  * The exps are evaluated in lanes: the rotation's by the half-angle form of
  * lct::expSO3MinusIdentity with sin(phi) / phi and cos(phi) as Taylor polynomials in phi^2 (a
- * turn of up to 2 pi, both truncated below 1e-17); the stretch's in the form E = exp(Y) - I, so a
- * small stretch keeps its relative accuracy: Taylor of degree 10 on Y / 2^s with ||Y / 2^s||_F
- * <= 1/8 (truncation below 2.3e-17 relative), then s squarings E <- 2E + E^2, s chosen per lane
- * (a lane's result never depends on the other lanes, so a threaded run equals a serial one bit
- * for bit). A lane whose blended turn exceeds 2 pi, or whose stretch log exceeds 16 in norm,
- * takes lct::blendAtPoint itself. A point with one weight of exactly 1 takes that probe's
- * matrix (no exp) and one with all weights 0 stays put, as in lct::blendAtPoint, so the
- * guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a single rigid probe) hold.
+ * turn of up to 2 pi, both truncated below 1e-17; Estrin's scheme); the stretch's in the form
+ * E = exp(Y) - I, so a small stretch keeps its relative accuracy: Taylor of degree 12 on Y / 2^s
+ * with ||Y / 2^s||_F <= 1/4 (truncation below 1e-17 relative; Paterson-Stockmeyer), then s
+ * squarings E <- 2E + E^2, s chosen per lane (a lane's result never depends on the other lanes,
+ * so a threaded run equals a serial one bit for bit). A lane whose blended turn exceeds 2 pi, or
+ * whose stretch log exceeds 16 in norm, takes lct::blendAtPoint itself. A point with one weight
+ * of exactly 1 takes that probe's matrix (no exp) and one with all weights 0 stays put, as in
+ * lct::blendAtPoint, so the guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a
+ * single rigid probe) hold. Needs GCC or Clang (vector extensions).
  */
 #ifndef lct_ProbeBlendBatch_h
 #define lct_ProbeBlendBatch_h
