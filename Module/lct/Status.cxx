@@ -34,9 +34,10 @@ const char* describe(Status status) noexcept
              "the "
              "MatrixLog parametrisation (the Polar one takes any finite magnitude)";
     case Status::InaccurateResult:
-      return "the result cannot be computed accurately in double precision from these keys (the "
-             "relative form between ill-conditioned keys loses the smallest stretch); refused "
-             "rather than returned inaccurate";
+      return "the result cannot be computed accurately in double precision from these inputs "
+             "(the relative form between ill-conditioned keys loses the smallest stretch, or a "
+             "turn wound beyond 1e9 rad keeps no digits below a turn); refused rather than "
+             "returned inaccurate";
     case Status::NumericalFailure:
       return "an eigensolver did not converge on this input (a defect of vtkLCT: please report "
              "the matrix)";
