@@ -25,17 +25,6 @@ namespace
 /// point by less than that.
 constexpr double kRigidStretchTolerance = 64.0 * std::numeric_limits<double>::epsilon();
 
-/// (0, v) (x) q for a quaternion q = (w, x, y, z): the dual part 1/2 (0, t) q of a rigid map
-/// without the factor 1/2.
-Eigen::Vector4d pureTimes(const Eigen::Vector3d& v, const Eigen::Vector4d& q)
-{
-  const Eigen::Vector3d u = q.tail<3>();
-  Eigen::Vector4d r;
-  r[0] = -v.dot(u);
-  r.tail<3>() = q[0] * v + v.cross(u);
-  return r;
-}
-
 /// R - I of a unit quaternion (w, x, y, z), without forming I.
 Eigen::Matrix3d quaternionMinusIdentity(const Eigen::Vector4d& q)
 {

@@ -101,6 +101,15 @@ VTKLCT_EXPORT ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>&
   const std::vector<Eigen::Vector3d>& centres,
   const std::vector<Eigen::Vector3d>& rotationReferences, BlendMode mode);
 
+/// (0, v) (x) q for a quaternion q = (w, x, y, z): the dual part 1/2 (0, t) q of a rigid map
+/// without the factor 1/2, i.e. (-v . u, w v + v x u) with u = (x, y, z).
+inline Eigen::Vector4d pureTimes(const Eigen::Vector3d& v, const Eigen::Vector4d& q)
+{
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  return Eigen::Vector4d(-(v[0] * x + v[1] * y + v[2] * z), w * v[0] + (v[1] * z - v[2] * y),
+    w * v[1] + (v[2] * x - v[0] * z), w * v[2] + (v[0] * y - v[1] * x));
+}
+
 /// The blended map at one point: p' = p + linearMinusIdentity (p - centre) + shift.
 struct PointMap
 {

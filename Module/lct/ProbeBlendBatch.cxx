@@ -183,15 +183,10 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
     {
       batch.stretch[i][k] = symmetricPart(probe.logs)[i];
     }
-    // (0, v) q = (-v . u, q_w v + v x u) for q = (q_w, u): the dual part without the factor
-    // 1/2, of the translation t_k and, column by column, of (L_k - I) c.
+    // The dual parts (without the factor 1/2) of the translation t_k and, column by column, of
+    // (L_k - I) c.
     const Eigen::Vector4d& q = probe.quaternion;
-    const Eigen::Vector3d u = q.tail<3>();
-    const auto pureTimes = [&](const Eigen::Vector3d& v) {
-      const Eigen::Vector3d tail = q[0] * v + v.cross(u);
-      return Eigen::Vector4d(-v.dot(u), tail[0], tail[1], tail[2]);
-    };
-    const Eigen::Vector4d dual = pureTimes(probe.translation);
+    const Eigen::Vector4d dual = pureTimes(probe.translation, q);
     for (int r = 0; r < 4; ++r)
     {
       batch.quaternion[r][k] = q[r];
@@ -199,7 +194,7 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
     }
     for (int c = 0; c < 3; ++c)
     {
-      const Eigen::Vector4d column = pureTimes(probe.linearMinusIdentity.col(c));
+      const Eigen::Vector4d column = pureTimes(probe.linearMinusIdentity.col(c), q);
       for (int r = 0; r < 4; ++r)
       {
         batch.dualPerCentre[3 * r + c][k] = column[r];
