@@ -57,7 +57,9 @@ static_assert(B == kProbeBatch, "the test entry points take one block of kProbeB
 using Vec = Vec4;
 using Mask = Mask4;
 #define LCT_LANES_TARGET LCT_LANES_CLONES
+#define LCT_LANES_OPAQUE(m)
 #include "lct/ProbeBlendLanes.inc"
+#undef LCT_LANES_OPAQUE
 #undef LCT_LANES_TARGET
 
 LCT_LANES_CLONES
@@ -74,7 +76,21 @@ int blendLanesForTest(const ProbeBlendSet& set, const ProbeBatchSet& p,
   }
   LaneFlags flags;
   LaneMaps m;
-  blendLanes(set, p, w, sumsToOne, splatMask(0), m, flags);
+  const Mask none = splatMask(0);
+  if (p.mode == BlendMode::Linear)
+  {
+    blendLanes<BlendMode::Linear, false>(set, p, w, sumsToOne, none, m, flags);
+  }
+  else if (p.mode == BlendMode::Polar)
+  {
+    p.allRigid ? blendLanes<BlendMode::Polar, true>(set, p, w, sumsToOne, none, m, flags)
+               : blendLanes<BlendMode::Polar, false>(set, p, w, sumsToOne, none, m, flags);
+  }
+  else
+  {
+    p.allRigid ? blendLanes<BlendMode::DualQuaternion, true>(set, p, w, sumsToOne, none, m, flags)
+               : blendLanes<BlendMode::DualQuaternion, false>(set, p, w, sumsToOne, none, m, flags);
+  }
   for (int j = 0; j < B; ++j)
   {
     for (int i = 0; i < 9; ++i)
@@ -139,7 +155,9 @@ constexpr int B = 8;
 using Vec = Vec8;
 using Mask = Mask8;
 #define LCT_LANES_TARGET __attribute__((target("arch=x86-64-v4")))
+#define LCT_LANES_OPAQUE(m) asm("" : "+v"(m))
 #include "lct/ProbeBlendLanes.inc"
+#undef LCT_LANES_OPAQUE
 #undef LCT_LANES_TARGET
 } // namespace lanes8
 
@@ -214,13 +232,12 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
 
 DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const WeightSource& source, const void* in, void* out, bool doublePoints,
-  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end,
-  int lanes)
+  const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end, int lanes)
 {
   const bool fromSlots = source.kind == WeightSource::Kind::Slots;
-  if (fromSlots ? (source.indices || source.slots != batch.probes ||
-                    !(source.weights || source.floatWeights))
-                : !source.radii)
+  if (fromSlots
+      ? (source.indices || source.slots != batch.probes || !(source.weights || source.floatWeights))
+      : !source.radii)
   {
     return { Status::InvalidArgument, begin };
   }
