@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #if !defined(__GNUC__)
 #error "lct/ProbeBlendBatch.cxx needs GCC or Clang vector extensions"

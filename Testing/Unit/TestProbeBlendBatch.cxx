@@ -375,7 +375,7 @@ TEST(ProbeBlendBatch, DeformsAsThePointByPointBlendAndAnySplitGivesTheSameBits)
   {
     for (const bool affine : { false, true })
     {
-      for (const int n : { 1, 3, 4, 8 })
+      for (const int n : { 1, 2, 3, 4, 5, 8 })
       {
         for (const auto normalization : { lct::WeightNormalization::Linear,
                lct::WeightNormalization::None, lct::WeightNormalization::Softmax })
