@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <type_traits>
@@ -247,7 +248,7 @@ DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
 #if !LCT_WIDE_LANES
   (void)lanes;
 #else
-  static const bool wide = hasWideLanes();
+  static const bool wide = probeBatchLanes() == 8;
   if (wide && lanes != 4)
   {
     return lanes8::deformLanes(
@@ -256,6 +257,20 @@ DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
 #endif
   return lanes4::deformLanes(
     set, batch, source, in, out, doublePoints, carried, carriedCount, begin, end);
+}
+
+int probeBatchLanes()
+{
+#if LCT_WIDE_LANES
+  static const int lanes = [] {
+    const char* chosen = std::getenv("LCT_PROBE_LANES");
+    const bool narrow = chosen && std::strcmp(chosen, "4") == 0;
+    return hasWideLanes() && !narrow ? 8 : 4;
+  }();
+  return lanes;
+#else
+  return 4;
+#endif
 }
 
 PointMap ProbeBatchMaps::at(int j) const

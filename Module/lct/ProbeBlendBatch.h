@@ -68,12 +68,17 @@ VTKLCT_EXPORT bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& ba
 /// Deforms points [begin, end) as lct::deformPoints does for distance weights, or for slot
 /// weights with slot k = probe k, `source.slots` == the number of probes and float or double
 /// weights: the same maps to a few ulps, the same checks and the same first failing point.
-/// `in`/`out` are float or double (`doublePoints`). `lanes`: 0 for the widest the CPU runs
-/// (8 with AVX-512, else 4), 4 to take 4 lanes whatever the CPU (tests compare the two).
+/// `in`/`out` are float or double (`doublePoints`). `lanes`: 0 for probeBatchLanes(), 4 to take
+/// 4 lanes whatever the CPU (tests compare the two).
 VTKLCT_EXPORT DeformFailure deformBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const WeightSource& source, const void* in, void* out, bool doublePoints,
   const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end,
   int lanes = 0);
+
+/// The lanes deformBatch takes by default: 8 where the CPU runs AVX-512 (and the library was
+/// built by GCC without sanitizers), else 4. The environment variable LCT_PROBE_LANES=4, read
+/// once, keeps 4 lanes on an AVX-512 CPU (to measure the AVX2 path there).
+VTKLCT_EXPORT int probeBatchLanes();
 
 /// The weights of a block: probe k's weight at point j is weights[k][j].
 using ProbeBatchWeights = double[kProbeBatchMaxProbes][kProbeBatch];

@@ -5,6 +5,8 @@
 // >= 1.5x, Linear and DualQuaternion >= 3x, all on 2 threads).
 #include "RecordingReporter.h"
 
+#include "lct/ProbeBlendBatch.h"
+
 #include "vtkFloatArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -191,9 +193,9 @@ int printTable(const lct_bench::RecordingReporter& reporter, bool check)
   const double mpts = static_cast<double>(gPoints) / 1e6;
   const auto rate = [&](double ms) { return ms > 0 ? mpts / (ms * 1e-3) : 0.0; };
   int missed = 0;
-  std::printf("\nProbe deformer, %lld points, %d probes, M points/s (ratio to "
+  std::printf("\nProbe deformer, %lld points, %d probes, %d lanes, M points/s (ratio to "
               "vtkWeightedTransformFilter, serial, same run):\n",
-    static_cast<long long>(gPoints), kProbes);
+    static_cast<long long>(gPoints), kProbes, lct::probeBatchLanes());
   for (int affine = 0; affine <= 1; ++affine)
   {
     const double vtk =
