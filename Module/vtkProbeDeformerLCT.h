@@ -12,7 +12,9 @@
  * - MATRIX_LOG: exp(sum_i w_i log A_i) (Alexa 2002); principal logs only;
  * - LINEAR: sum_i w_i A_i, what vtkWeightedTransformFilter does (collapses under twist);
  * - DUAL_QUATERNION: Kavan et al.'s dual-quaternion linear blend of the rigid parts with the
- *   hemisphere check, and the stretch blended by its log (Kaji & Ochiai Table 2, "Polar+DQ").
+ *   hemisphere check, and the stretches S_i of the polar split blended as matrices,
+ *   sum w_i S_i / sum w_i (Kaji & Ochiai Table 2, "Polar+DQ"; Kavan et al. blend scale and shear
+ *   so); weights whose sum cancels (negative weights, no normalisation) are an error.
  *
  * The log blends are taken about a centre per point, c(p) = sum |w_i| c_i / sum |w_i| of the
  * probes' rest centres c_i (the translation of each rest transform): unlike the paper's

@@ -36,7 +36,14 @@ Eigen::Matrix3d quaternionMinusIdentity(const Eigen::Vector4d& q)
   return d;
 }
 
-/// (R - I) S + (S - I) = R S - I for the blended rotation and stretch.
+/// (R - I) S + (S - I) = R S - I for the blended rotation and the stretch S = I + E.
+Eigen::Matrix3d withStretchMinusIdentity(
+  const Eigen::Matrix3d& rotationMinusIdentity, const Eigen::Matrix3d& e)
+{
+  return rotationMinusIdentity + rotationMinusIdentity * e + e;
+}
+
+/// R S - I for the blended rotation and the stretch S = exp(Y).
 Eigen::Matrix3d withStretch(const Eigen::Matrix3d& rotationMinusIdentity, const SymmetricVector& y)
 {
   const Eigen::Matrix3d s = expSym(fromSymmetricVector(y));
@@ -192,7 +199,7 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
   Eigen::Vector4d real = Eigen::Vector4d::Zero();
   Eigen::Vector4d dual = Eigen::Vector4d::Zero();
   SymmetricVector stretch = SymmetricVector::Zero();
-  double total = 0.0;
+  double total = 0.0, sum = 0.0;
   for (int k = 0; k < slots; ++k)
   {
     double w = weights[k];
@@ -201,10 +208,11 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
       continue;
     }
     total += std::abs(w);
+    sum += w;
     const BlendProbe& probe = set.probes[indices ? indices[k] : k];
     if (!set.allRigid)
     {
-      stretch += w * symmetricPart(probe.logs);
+      stretch += w * probe.stretchMinusIdentity;
     }
     if (probe.quaternion.dot(reference) < 0.0)
     {
@@ -227,9 +235,20 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
     (q[0] * e.tail<3>() - e[0] * q.tail<3>() +
       Eigen::Vector3d(q.tail<3>()).cross(Eigen::Vector3d(e.tail<3>())));
   const Eigen::Matrix3d rotationMinusIdentity = quaternionMinusIdentity(q);
-  map.linearMinusIdentity = (set.allRigid || stretch.isZero(0.0))
-    ? rotationMinusIdentity
-    : withStretch(rotationMinusIdentity, stretch);
+  if (set.allRigid || stretch.isZero(0.0))
+  {
+    map.linearMinusIdentity = rotationMinusIdentity;
+    return Status::Ok;
+  }
+  // sum w_i S_i / sum w_i - I = sum w_i (S_i - I) / sum w_i, weighted as DLB weighs the rotations
+  // (a rigid blend stays rigid whatever the weights sum to); a sum of weights that cancels
+  // (negative weights, no normalisation) has no stretch.
+  if (!(std::abs(sum) > 1e-12 * total))
+  {
+    return Status::NumericalFailure;
+  }
+  map.linearMinusIdentity =
+    withStretchMinusIdentity(rotationMinusIdentity, fromSymmetricVector(stretch * (1.0 / sum)));
   return Status::Ok;
 }
 
@@ -398,6 +417,7 @@ ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
     probe.translation = a.topRightCorner<3, 1>();
     probe.centre = centres[i];
     probe.logs.setZero();
+    probe.stretchMinusIdentity.setZero();
     switch (mode)
     {
       case BlendMode::Polar:
@@ -422,6 +442,12 @@ ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
         }
         const Eigen::Quaterniond q(expSO3(rotationPart(probe.logs)));
         probe.quaternion = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+        if (mode == BlendMode::DualQuaternion && !probe.rigid)
+        {
+          Eigen::Matrix3d e = expSym(fromSymmetricVector(symmetricPart(probe.logs)));
+          e.diagonal().array() -= 1.0;
+          probe.stretchMinusIdentity = toSymmetricVector(e);
+        }
         break;
       }
       case BlendMode::MatrixLog:

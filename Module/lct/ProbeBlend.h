@@ -9,7 +9,9 @@
  *   MatrixLog      exp(sum_i w_i log A_i^c)        Alexa 2002 eq. 7
  *   Linear         sum_i w_i A_i                   linear blend skinning
  * (vtkWeightedTransformFilter) DualQuaternion DLB of the rigid parts of A_i^c (Kavan et al. 2008,
- * with the hemisphere check), times exp(sum_i w_i log S_i): "Polar+DQ" of Kaji & Ochiai Table 2
+ * with the hemisphere check), times sum_i w_i S_i / sum_i w_i: "Polar+DQ" of Kaji & Ochiai
+ * Table 2 (dual quaternions for the rotation and translation, the positive definite stretches
+ * blended as matrices, as Kavan et al. blend scale and shear)
  *
  * where A_i^c = T(-c) A_i T(c) is the probe seen from a centre c. Eq. 9 is not
  * translation-equivariant: the log of a rotation about a far centre carries a translation
@@ -40,6 +42,7 @@
 
 #include "lct/LogCoords.h"
 #include "lct/Status.h"
+#include "lct/Sym3.h"
 
 #include <Eigen/Core>
 
@@ -54,7 +57,7 @@ enum class BlendMode
   Polar,         ///< Kaji & Ochiai's phi(sum w psi): rigid stays rigid, turns beyond 2 pi
   MatrixLog,     ///< Alexa's exp(sum w log): principal logs only
   Linear,        ///< LBS: sum w A (collapses under twist)
-  DualQuaternion ///< Kavan's DLB for the rigid part, log blend of the stretch
+  DualQuaternion ///< Kavan's DLB for the rigid part, linear blend of the stretch S
 };
 
 /// How raw weights become the weights of the blend.
@@ -73,6 +76,7 @@ struct BlendProbe
   Eigen::Vector3d centre;              ///< the rest centre c_i
   LogCoords logs;                      ///< psi(A) (Polar, DualQuaternion) or log A (MatrixLog)
   Eigen::Vector4d quaternion;          ///< DualQuaternion: (w, x, y, z) of the rotation U of L
+  SymmetricVector stretchMinusIdentity; ///< DualQuaternion: S - I of L = U S (0 when rigid)
   bool rigid = true;                   ///< no stretch (Polar, DualQuaternion: log S = 0)
 };
 

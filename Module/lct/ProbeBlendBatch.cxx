@@ -204,6 +204,7 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
     for (int i = 0; i < 6; ++i)
     {
       batch.stretch[i][k] = symmetricPart(probe.logs)[i];
+      batch.stretchMinusIdentity[i][k] = probe.stretchMinusIdentity[i];
     }
     // The dual parts (without the factor 1/2) of the translation t_k and, column by column, of
     // (L_k - I) c.

@@ -10,7 +10,7 @@
  * per-point call, no allocation, no aliasing through memory). Blends: Polar (Kaji & Ochiai's
  * phi(sum w psi(A)), about the point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and
  * DualQuaternion (Kavan's DLB with the hemisphere check, dual parts formed once per probe; with
- * stretch, "Polar+DQ": the rigid parts about c(p) and exp of the blended stretch log).
+ * stretch, "Polar+DQ": the rigid parts about c(p) and the stretches S_k blended linearly).
  *
  * The exps are evaluated in lanes: the rotation's by the half-angle form of
  * lct::expSO3MinusIdentity with sin(phi) / phi and cos(phi) as Taylor polynomials in phi^2 (a
@@ -19,7 +19,7 @@
  * with ||Y / 2^s||_F <= 1/4 (truncation below 1e-17 relative; Paterson-Stockmeyer), then s
  * squarings E <- 2E + E^2, s chosen per lane (a lane's result never depends on the other lanes,
  * so a threaded run equals a serial one bit for bit). A lane whose blended turn exceeds 2 pi, or
- * whose stretch log exceeds 16 in norm, takes lct::blendAtPoint itself. A point with one weight
+ * whose stretch log exceeds 16 in norm (Polar), takes lct::blendAtPoint itself. A point with one weight
  * of exactly 1 takes that probe's matrix (no exp) and one with all weights 0 stays put, as in
  * lct::blendAtPoint, so the guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a
  * single rigid probe) hold. Needs GCC or Clang (vector extensions).
@@ -47,7 +47,8 @@ struct ProbeBatchSet
   BlendMode mode = BlendMode::Polar;
   bool allRigid = true;
   double rotation[3][kProbeBatchMaxProbes];            ///< Polar: rotation part of psi(A_k)
-  double stretch[6][kProbeBatchMaxProbes];             ///< log S_k as a SymmetricVector
+  double stretch[6][kProbeBatchMaxProbes];             ///< Polar: log S_k as a SymmetricVector
+  double stretchMinusIdentity[6][kProbeBatchMaxProbes]; ///< DualQuaternion: S_k - I, the same
   double linearMinusIdentity[9][kProbeBatchMaxProbes]; ///< row-major L_k - I
   double translation[3][kProbeBatchMaxProbes];
   double centre[3][kProbeBatchMaxProbes];

@@ -22,8 +22,8 @@ using lct_test::TransformClass;
 
 /// Probes: random rigid or affine maps, turns of up to `maxTurn` radians, each probe's rotation
 /// log taken on the branch of a reference of that turn (beyond pi too).
-lct::ProbeBlendSet probes(RandomTransforms& r, int n, bool affine, lct::BlendMode mode,
-  double maxTurn)
+lct::ProbeBlendSet probes(
+  RandomTransforms& r, int n, bool affine, lct::BlendMode mode, double maxTurn)
 {
   std::vector<Eigen::Matrix4d> relative;
   std::vector<Eigen::Vector3d> centres, references;
@@ -46,9 +46,8 @@ lct::ProbeBlendSet probes(RandomTransforms& r, int n, bool affine, lct::BlendMod
     centres.push_back(Eigen::Vector3d::Random() * 5.0);
     references.push_back(turn * axis);
   }
-  const lct::ProbePreparation p = lct::prepareProbes(
-    relative, centres, mode == lct::BlendMode::Polar ? references : std::vector<Eigen::Vector3d>{},
-    mode);
+  const lct::ProbePreparation p = lct::prepareProbes(relative, centres,
+    mode == lct::BlendMode::Polar ? references : std::vector<Eigen::Vector3d>{}, mode);
   EXPECT_TRUE(p.ok());
   return p.set;
 }
@@ -327,8 +326,8 @@ void checkDeformation(lct::BlendMode mode, bool affine, int n,
     }
     const Eigen::Vector3d got(out[3 * i], out[3 * i + 1], out[3 * i + 2]);
     EXPECT_LE((got - q).norm(), tolerance * (1.0 + q.norm()))
-      << "mode " << static_cast<int>(mode) << " affine " << affine << " probes " << n
-      << " point " << i;
+      << "mode " << static_cast<int>(mode) << " affine " << affine << " probes " << n << " point "
+      << i;
   }
   EXPECT_EQ(whole.point, firstFailure);
   // Four lanes, as a CPU without AVX-512 runs them, give the same points to rounding.
@@ -384,8 +383,8 @@ TEST(ProbeBlendBatch, DeformsAsThePointByPointBlendAndAnySplitGivesTheSameBits)
           checkDeformation<float>(mode, affine, n, normalization, r);
           for (const double exponent : { 1.0, 2.0, 1.5 })
           {
-            for (const auto kind : { lct::WeightSource::Kind::InverseDistance,
-                   lct::WeightSource::Kind::Cutoff })
+            for (const auto kind :
+              { lct::WeightSource::Kind::InverseDistance, lct::WeightSource::Kind::Cutoff })
             {
               checkDeformation<double>(mode, affine, n, normalization, r, kind, exponent);
             }
@@ -410,7 +409,7 @@ TEST(ProbeBlendBatch, ReportsTheFirstFailingPointWithItsCause)
     return lct::deformPoints(set, source, in.data(), out.data(), nullptr, 0, 0, kPoints);
   };
   EXPECT_TRUE(run().ok());
-  weights[2 * 23] = NAN; // point 23
+  weights[2 * 23] = NAN;  // point 23
   weights[2 * 22] = -5.0; // point 22: a negative sum, earlier
   lct::DeformFailure f = run();
   EXPECT_EQ(f.point, 22);
@@ -434,4 +433,23 @@ TEST(ProbeBlendBatch, ReportsTheFirstFailingPointWithItsCause)
   f = lct::deformPoints(linear, source, inFloat.data(), outFloat.data(), nullptr, 0, 0, kPoints);
   EXPECT_EQ(f.point, 30);
   EXPECT_EQ(f.status, lct::Status::OutOfRange);
+  // DualQuaternion with stretch: unnormalised weights whose sum cancels (point 9) have no blend of
+  // the stretches, as lct::blendAtPoint says; in 8 lanes and in 4.
+  in[3 * 30] = 1.0;
+  weights[2 * 30] = 0.5;
+  const lct::ProbeBlendSet dq = probes(r, 2, true, lct::BlendMode::DualQuaternion, 1.0);
+  ASSERT_FALSE(dq.allRigid);
+  weights[2 * 9] = 2.0;
+  weights[2 * 9 + 1] = -2.0;
+  lct::PointMap map;
+  EXPECT_EQ(lct::blendAtPoint(dq, &weights[2 * 9], nullptr, 2, map), lct::Status::NumericalFailure);
+  lct::ProbeBatchSet batch;
+  ASSERT_TRUE(lct::prepareProbeBatch(dq, batch));
+  for (const int lanes : { 0, 4 })
+  {
+    f = lct::deformBatch(
+      dq, batch, source, in.data(), out.data(), true, nullptr, 0, 0, kPoints, lanes);
+    EXPECT_EQ(f.point, 9) << lanes;
+    EXPECT_EQ(f.status, lct::Status::NumericalFailure) << lanes;
+  }
 }

@@ -287,6 +287,87 @@ TEST(ProbeBlend, DualQuaternionMatchesKavanWithEigenQuaternions)
   }
 }
 
+/// "Polar+DQ" (Kaji & Ochiai Table 2) written out with Eigen: about c = sum w_i c_i, each
+/// T(-c) A_i T(c) = [U_i S_i | t_i] split by Eigen's SVD; Kavan's DLB of the rigid parts
+/// [U_i | t_i] with Eigen's quaternions, times the linear blend sum w_i S_i / sum w_i.
+Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weightScale)
+{
+  const std::size_t n = s.probes.size();
+  std::vector<double> w(n);
+  double sum = 0.0;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    w[i] = weightScale * s.weights[point * n + i];
+    sum += w[i];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    c += w[i] / sum * s.centres[i];
+  }
+  std::vector<Eigen::Quaterniond> rotations;
+  std::vector<Eigen::Vector3d> shifts;
+  Eigen::Matrix3d stretch = Eigen::Matrix3d::Zero();
+  std::size_t pivot = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Matrix4d centred = translation(-c) * s.probes[i] * translation(c);
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
+      centred.topLeftCorner<3, 3>(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+    rotations.emplace_back(Eigen::Matrix3d(svd.matrixU() * svd.matrixV().transpose()));
+    shifts.push_back(centred.topRightCorner<3, 1>());
+    stretch +=
+      w[i] / sum * svd.matrixV() * svd.singularValues().asDiagonal() * svd.matrixV().transpose();
+    pivot = w[i] > w[pivot] ? i : pivot;
+  }
+  Eigen::Vector4d real = Eigen::Vector4d::Zero(), dual = Eigen::Vector4d::Zero();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Quaterniond& q = rotations[i];
+    const Eigen::Quaterniond d =
+      Eigen::Quaterniond(0.0, shifts[i].x(), shifts[i].y(), shifts[i].z()) * q;
+    const double sign = q.dot(rotations[pivot]) < 0 ? -1.0 : 1.0;
+    real += sign * w[i] * q.coeffs();
+    dual += sign * w[i] * 0.5 * d.coeffs();
+  }
+  const double norm = real.norm();
+  const Eigen::Quaterniond q(real / norm), d(dual / norm);
+  const Eigen::Quaterniond t = d * q.conjugate();
+  return c + q.toRotationMatrix() * stretch * (s.points[point] - c) + 2.0 * t.vec();
+}
+
+TEST(ProbeBlend, DualQuaternionWithStretchIsKavansBlendTimesTheLinearBlendOfTheStretches)
+{
+  RandomTransforms r(16);
+  const Scene s = randomScene(r, TransformClass::GeneralAffine, 4, 300);
+  const auto prepared = lct::prepareProbes(s.probes, s.centres, {}, lct::BlendMode::DualQuaternion);
+  ASSERT_TRUE(prepared.ok());
+  ASSERT_FALSE(prepared.set.allRigid);
+  // Weights summing to 2.5 blend as their normalised selves (DLB normalises the rotations; the
+  // stretches are divided by the sum likewise).
+  for (const double scale : { 1.0, 2.5 })
+  {
+    double worst = 0.0;
+    for (std::size_t p = 0; p < s.points.size(); ++p)
+    {
+      std::vector<double> w(&s.weights[p * 4], &s.weights[p * 4] + 4);
+      for (double& x : w)
+      {
+        x *= scale;
+      }
+      const Eigen::Vector3d ours = blended(prepared.set, w.data(), s.points[p]);
+      const Eigen::Vector3d expected = polarDualQuaternionOracle(s, static_cast<int>(p), scale);
+      worst = std::max(worst, (ours - expected).norm() / (1.0 + s.points[p].norm()));
+    }
+    EXPECT_LT(worst, 1e-11) << "weights scaled by " << scale;
+  }
+  // Weights whose sum cancels have no stretch blend: reported, not divided by zero.
+  const double cancelling[4] = { 1.0, -1.0, 0.5, -0.5 };
+  lct::PointMap map;
+  EXPECT_EQ(
+    lct::blendAtPoint(prepared.set, cancelling, nullptr, 4, map), lct::Status::NumericalFailure);
+}
+
 TEST(ProbeBlend, TranslatingTheSceneTranslatesTheOutput)
 {
   RandomTransforms r(13);
