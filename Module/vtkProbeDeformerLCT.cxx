@@ -681,7 +681,8 @@ int vtkProbeDeformerLCT::RequestData(
                     << formatVector(Eigen::Vector3d(p[0], p[1], p[2])) << " cannot be deformed in "
                     << this->GetBlendModeAsString() << " mode: " << lct::describe(failure.status)
                     << (failure.status == lct::Status::NumericalFailure
-                           ? " (its weighted rotations cancel)"
+                           ? " (its weighted rotations cancel, or with stretched probes its "
+                             "weights sum to 0: NormalizationToLinear keeps them from that)"
                            : ""));
       return fail();
     }

@@ -968,6 +968,37 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
     g->SetInputData(far);
     expectRefused(g, "cannot be deformed", 0);
   }
+
+  // DualQuaternion with stretched probes and unnormalised weights summing to 0: no blend of the
+  // stretches (sum w S / sum w); refused, the last output kept.
+  {
+    vtkNew<vtkPolyData> two;
+    vtkNew<vtkPoints> twoPoints;
+    twoPoints->InsertNextPoint(1, 2, 3);
+    twoPoints->InsertNextPoint(4, 5, 6);
+    two->SetPoints(twoPoints);
+    vtkNew<vtkDoubleArray> w;
+    w->SetName("w");
+    w->SetNumberOfComponents(2);
+    w->InsertNextTuple2(0.25, 0.75);
+    w->InsertNextTuple2(0.25, 0.75);
+    two->GetPointData()->AddArray(w);
+    vtkNew<vtkTransform> stretched, turned;
+    stretched->Scale(2, 1, 0.5);
+    turned->RotateX(30);
+    vtkNew<vtkProbeDeformerLCT> g;
+    g->AddProbe(stretched);
+    g->AddProbe(turned);
+    g->SetInputData(two);
+    g->SetBlendModeToDualQuaternion();
+    g->SetWeightModeToPointData();
+    g->SetWeightArrayName("w");
+    g->SetNormalizationToNone();
+    ASSERT_EQ(g->GetExecutive()->Update(), 1);
+    w->SetTuple2(1, 2.0, -2.0);
+    w->Modified();
+    expectRefused(g, "weights sum to 0", 2);
+  }
 }
 
 TEST(ProbeDeformer, ATwistedCylinderKeepsItsRadiusExceptUnderLinearBlending)
