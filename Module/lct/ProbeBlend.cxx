@@ -190,15 +190,15 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
   {
     return Status::Ok;
   }
-  // DLB commutes with rigid changes of frame, so rigid probes need no centre; stretches do.
-  if (set.allRigid)
-  {
-    map.centre.setZero();
-  }
+  // Kavan et al.'s two phases, A_k = [U_k | t'_k] T(c_k) S_k T(-c_k): the stretches about their
+  // probes' centres blended linearly, then the rigid parts by DLB. Both commute with translating
+  // the scene, so no per-point centre is needed.
+  map.centre.setZero();
   const Eigen::Vector4d& reference = set.probes[pivot].quaternion;
   Eigen::Vector4d real = Eigen::Vector4d::Zero();
   Eigen::Vector4d dual = Eigen::Vector4d::Zero();
   SymmetricVector stretch = SymmetricVector::Zero();
+  Eigen::Vector3d stretchShift = Eigen::Vector3d::Zero();
   double total = 0.0, sum = 0.0;
   for (int k = 0; k < slots; ++k)
   {
@@ -213,42 +213,46 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
     if (!set.allRigid)
     {
       stretch += w * probe.stretchMinusIdentity;
+      stretchShift += w * probe.stretchShift;
     }
     if (probe.quaternion.dot(reference) < 0.0)
     {
       w = -w;
     }
-    // The rigid part of T(-c) A T(c) = T(l') U S: l' = A c - c.
-    const Eigen::Vector3d shift = probe.linearMinusIdentity * map.centre + probe.translation;
     real += w * probe.quaternion;
-    dual += w * pureTimes(shift, probe.quaternion);
+    dual += w * probe.dual;
   }
   const double norm = real.norm();
   if (!(norm > 1e-12 * total))
   {
     return Status::NumericalFailure;
   }
-  const Eigen::Vector4d q = real / norm;
-  const Eigen::Vector4d e = dual / (2.0 * norm);
+  const double inverse = 1.0 / norm;
+  const Eigen::Vector4d q = real * inverse;
+  const Eigen::Vector4d e = dual * (0.5 * inverse);
   // t = 2 vec(e q*) (Kavan et al. 2008, Alg. 1); the part of e along q drops out.
   map.shift = 2.0 *
     (q[0] * e.tail<3>() - e[0] * q.tail<3>() +
       Eigen::Vector3d(q.tail<3>()).cross(Eigen::Vector3d(e.tail<3>())));
   const Eigen::Matrix3d rotationMinusIdentity = quaternionMinusIdentity(q);
-  if (set.allRigid || stretch.isZero(0.0))
+  if (set.allRigid || (stretch.isZero(0.0) && stretchShift.isZero(0.0)))
   {
     map.linearMinusIdentity = rotationMinusIdentity;
     return Status::Ok;
   }
-  // sum w_i S_i / sum w_i - I = sum w_i (S_i - I) / sum w_i, weighted as DLB weighs the rotations
-  // (a rigid blend stays rigid whatever the weights sum to); a sum of weights that cancels
-  // (negative weights, no normalisation) has no stretch.
+  // The stretch phase p -> S p + g with S - I = sum w_k (S_k - I) / sum w_k and
+  // g = -sum w_k (S_k - I) c_k / sum w_k, weighted as DLB weighs the rotations (a rigid blend stays
+  // rigid whatever the weights sum to); a sum of weights that cancels (negative weights, no
+  // normalisation) has no stretch.
   if (!(std::abs(sum) > 1e-12 * total))
   {
     return Status::NumericalFailure;
   }
+  const double inverseSum = 1.0 / sum;
+  const Eigen::Vector3d g = stretchShift * (-inverseSum);
   map.linearMinusIdentity =
-    withStretchMinusIdentity(rotationMinusIdentity, fromSymmetricVector(stretch * (1.0 / sum)));
+    withStretchMinusIdentity(rotationMinusIdentity, fromSymmetricVector(stretch * inverseSum));
+  map.shift += g + rotationMinusIdentity * g;
   return Status::Ok;
 }
 
@@ -418,6 +422,8 @@ ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
     probe.centre = centres[i];
     probe.logs.setZero();
     probe.stretchMinusIdentity.setZero();
+    probe.stretchShift.setZero();
+    probe.dual.setZero();
     switch (mode)
     {
       case BlendMode::Polar:
@@ -442,12 +448,19 @@ ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
         }
         const Eigen::Quaterniond q(expSO3(rotationPart(probe.logs)));
         probe.quaternion = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+        // DualQuaternion (Kavan et al.'s two phases): A = [U | t'] T(c) S T(-c) with
+        // t' = t + (L - U) c; the dual part (0, t') q (without the factor 1/2).
+        Eigen::Vector3d rigidTranslation = probe.translation;
         if (mode == BlendMode::DualQuaternion && !probe.rigid)
         {
           Eigen::Matrix3d e = expSym(fromSymmetricVector(symmetricPart(probe.logs)));
           e.diagonal().array() -= 1.0;
           probe.stretchMinusIdentity = toSymmetricVector(e);
+          probe.stretchShift = e * probe.centre;
+          const Eigen::Matrix3d u = expSO3(rotationPart(probe.logs));
+          rigidTranslation += (a.topLeftCorner<3, 3>() - u) * probe.centre;
         }
+        probe.dual = pureTimes(rigidTranslation, probe.quaternion);
         break;
       }
       case BlendMode::MatrixLog:
@@ -577,10 +590,9 @@ DeformFailure deformPoints(const ProbeBlendSet& set, const WeightSource& source,
 {
   const bool fromSlots = source.kind == WeightSource::Kind::Slots;
   ProbeBatchSet batch;
-  const bool batchable = fromSlots
-    ? !source.indices && source.slots == static_cast<int>(set.probes.size()) &&
-      (source.weights || source.floatWeights)
-    : source.radii != nullptr;
+  const bool batchable = fromSlots ? !source.indices &&
+      source.slots == static_cast<int>(set.probes.size()) && (source.weights || source.floatWeights)
+                                   : source.radii != nullptr;
   if (batchable && prepareProbeBatch(set, batch))
   {
     return deformBatch(set, batch, source, in, out, std::is_same<Real, double>::value, carried,

@@ -8,12 +8,15 @@
  *   Polar          phi(sum_i w_i psi(A_i^c))       Kaji & Ochiai eq. 9, psi = (l, log U, log S)
  *   MatrixLog      exp(sum_i w_i log A_i^c)        Alexa 2002 eq. 7
  *   Linear         sum_i w_i A_i                   linear blend skinning
- * (vtkWeightedTransformFilter) DualQuaternion DLB of the rigid parts of A_i^c (Kavan et al. 2008,
- * with the hemisphere check), times sum_i w_i S_i / sum_i w_i: "Polar+DQ" of Kaji & Ochiai
- * Table 2 (dual quaternions for the rotation and translation, the positive definite stretches
- * blended as matrices, as Kavan et al. blend scale and shear)
+ *                                                  (vtkWeightedTransformFilter)
+ *   DualQuaternion DLB_i([U_i | t_i']) o           "Polar+DQ" of Kaji & Ochiai Table 2, in
+ *                  sum_i w_i S_i^(c_i) / sum_i w_i  Kavan et al. 2008's two phases
  *
- * where A_i^c = T(-c) A_i T(c) is the probe seen from a centre c. Eq. 9 is not
+ * For DualQuaternion A_i = [U_i | t_i'] S_i^(c_i), with S_i^(c_i) = T(c_i) S_i T(-c_i) the
+ * positive definite stretch of the polar split about the probe's own centre: the stretches are
+ * blended as matrices, then the rigid parts by Kavan's DLB with the hemisphere check (t_i' =
+ * t_i + (L_i - U_i) c_i). Elsewhere A_i^c = T(-c) A_i T(c) is the probe seen from a centre c.
+ * Eq. 9 is not
  * translation-equivariant: the log of a rotation about a far centre carries a translation
  * l = (R - I) c that is blended linearly while the rotation is blended by angle, so the same
  * scene placed elsewhere deforms differently (a probe turning 90 degrees about c, weight 1/2:
@@ -21,8 +24,8 @@
  * rest centre c(p) = sum_i |w_i| c_i / sum_i |w_i|, which moves with the scene, so translating
  * the mesh and every probe by d translates the output by d, and a point of weight 1 on one probe
  * moves by exactly that probe. Centring on the point itself instead would turn the Polar blend
- * into LBS (only sum_i w_i l_i would survive); c(p) keeps the log blend. Linear and the rigid
- * part of DualQuaternion are equivariant for any centre.
+ * into LBS (only sum_i w_i l_i would survive); c(p) keeps the log blend. Linear and
+ * DualQuaternion (both its phases) are equivariant without a centre.
  *
  * Every blend is applied as  p' = p + D (p - c) + l  with D = (blended linear part) - I formed
  * without I, so probes at rest leave every point bit for bit where it was. Normals transform by
@@ -76,8 +79,12 @@ struct BlendProbe
   Eigen::Vector3d centre;              ///< the rest centre c_i
   LogCoords logs;                      ///< psi(A) (Polar, DualQuaternion) or log A (MatrixLog)
   Eigen::Vector4d quaternion;          ///< DualQuaternion: (w, x, y, z) of the rotation U of L
-  SymmetricVector stretchMinusIdentity; ///< DualQuaternion: S - I of L = U S (0 when rigid)
-  bool rigid = true;                   ///< no stretch (Polar, DualQuaternion: log S = 0)
+  /// DualQuaternion, in Kavan et al.'s two phases A = [U | t'] T(c) S T(-c): S - I of L = U S,
+  /// (S - I) c (both 0 when rigid) and the dual part (0, t') q, t' = t + (L - U) c.
+  SymmetricVector stretchMinusIdentity;
+  Eigen::Vector3d stretchShift;
+  Eigen::Vector4d dual;
+  bool rigid = true; ///< no stretch (Polar, DualQuaternion: log S = 0)
 };
 
 /// The probes of one execution.

@@ -206,22 +206,15 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
       batch.stretch[i][k] = symmetricPart(probe.logs)[i];
       batch.stretchMinusIdentity[i][k] = probe.stretchMinusIdentity[i];
     }
-    // The dual parts (without the factor 1/2) of the translation t_k and, column by column, of
-    // (L_k - I) c.
     const Eigen::Vector4d& q = probe.quaternion;
-    const Eigen::Vector4d dual = pureTimes(probe.translation, q);
     for (int r = 0; r < 4; ++r)
     {
       batch.quaternion[r][k] = q[r];
-      batch.dual[r][k] = dual[r];
+      batch.dual[r][k] = probe.dual[r];
     }
-    for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
     {
-      const Eigen::Vector4d column = pureTimes(probe.linearMinusIdentity.col(c), q);
-      for (int r = 0; r < 4; ++r)
-      {
-        batch.dualPerCentre[3 * r + c][k] = column[r];
-      }
+      batch.stretchShift[r][k] = probe.stretchShift[r];
     }
   }
   for (int k = 0; k < n; ++k)

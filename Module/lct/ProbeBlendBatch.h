@@ -10,7 +10,8 @@
  * per-point call, no allocation, no aliasing through memory). Blends: Polar (Kaji & Ochiai's
  * phi(sum w psi(A)), about the point's centre c(p) = sum |w| c / sum |w|), Linear (LBS) and
  * DualQuaternion (Kavan's DLB with the hemisphere check, dual parts formed once per probe; with
- * stretch, "Polar+DQ": the rigid parts about c(p) and the stretches S_k blended linearly).
+ * stretch, "Polar+DQ" in Kavan et al.'s two phases: the stretches about their probes' centres
+ * blended linearly, then the rigid parts).
  *
  * The exps are evaluated in lanes: the rotation's by the half-angle form of
  * lct::expSO3MinusIdentity with sin(phi) / phi and cos(phi) as Taylor polynomials in phi^2 (a
@@ -19,9 +20,9 @@
  * with ||Y / 2^s||_F <= 1/4 (truncation below 1e-17 relative; Paterson-Stockmeyer), then s
  * squarings E <- 2E + E^2, s chosen per lane (a lane's result never depends on the other lanes,
  * so a threaded run equals a serial one bit for bit). A lane whose blended turn exceeds 2 pi, or
- * whose stretch log exceeds 16 in norm (Polar), takes lct::blendAtPoint itself. A point with one weight
- * of exactly 1 takes that probe's matrix (no exp) and one with all weights 0 stays put, as in
- * lct::blendAtPoint, so the guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a
+ * whose stretch log exceeds 16 in norm (Polar), takes lct::blendAtPoint itself. A point with one
+ * weight of exactly 1 takes that probe's matrix (no exp) and one with all weights 0 stays put, as
+ * in lct::blendAtPoint, so the guarantees of lct/ProbeBlend.h (exactness at rest, rigidity of a
  * single rigid probe) hold. Needs GCC or Clang (vector extensions).
  */
 #ifndef lct_ProbeBlendBatch_h
@@ -46,17 +47,15 @@ struct ProbeBatchSet
   int probes = 0;
   BlendMode mode = BlendMode::Polar;
   bool allRigid = true;
-  double rotation[3][kProbeBatchMaxProbes];            ///< Polar: rotation part of psi(A_k)
-  double stretch[6][kProbeBatchMaxProbes];             ///< Polar: log S_k as a SymmetricVector
+  double rotation[3][kProbeBatchMaxProbes];             ///< Polar: rotation part of psi(A_k)
+  double stretch[6][kProbeBatchMaxProbes];              ///< Polar: log S_k as a SymmetricVector
   double stretchMinusIdentity[6][kProbeBatchMaxProbes]; ///< DualQuaternion: S_k - I, the same
-  double linearMinusIdentity[9][kProbeBatchMaxProbes]; ///< row-major L_k - I
+  double linearMinusIdentity[9][kProbeBatchMaxProbes];  ///< row-major L_k - I
   double translation[3][kProbeBatchMaxProbes];
   double centre[3][kProbeBatchMaxProbes];
   double quaternion[4][kProbeBatchMaxProbes]; ///< DualQuaternion: (w, x, y, z)
-  double dual[4][kProbeBatchMaxProbes];       ///< DualQuaternion: (0, t_k) q_k
-  /// DualQuaternion with stretch: the dual part of the rigid part about a centre c is
-  /// dual_k + dualPerCentre_k c, with (0, (L_k - I) c) q_k = dualPerCentre_k c (row-major 4 x 3).
-  double dualPerCentre[12][kProbeBatchMaxProbes];
+  double dual[4][kProbeBatchMaxProbes];       ///< DualQuaternion: (0, t_k') q_k (BlendProbe::dual)
+  double stretchShift[3][kProbeBatchMaxProbes]; ///< DualQuaternion: (S_k - I) c_k
   /// DualQuaternion: -1 where probe k's rotation is in the other hemisphere than probe p's
   /// (Kavan's check, against the point's heaviest probe p), else 1: [k][p].
   double hemisphere[kProbeBatchMaxProbes][kProbeBatchMaxProbes];

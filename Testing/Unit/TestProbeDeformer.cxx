@@ -287,37 +287,36 @@ TEST(ProbeBlend, DualQuaternionMatchesKavanWithEigenQuaternions)
   }
 }
 
-/// "Polar+DQ" (Kaji & Ochiai Table 2) written out with Eigen: about c = sum w_i c_i, each
-/// T(-c) A_i T(c) = [U_i S_i | t_i] split by Eigen's SVD; Kavan's DLB of the rigid parts
-/// [U_i | t_i] with Eigen's quaternions, times the linear blend sum w_i S_i / sum w_i.
+/// "Polar+DQ" (Kaji & Ochiai Table 2) in Kavan et al.'s two phases, written out with Eigen: each
+/// A_i = [U_i | t_i'] T(c_i) S_i T(-c_i) split by Eigen's SVD (t_i' = t_i + (L_i - U_i) c_i); the
+/// point stretched by sum w_i (c_i + S_i (p - c_i)) / sum w_i, then moved by Kavan's DLB of the
+/// rigid parts with Eigen's quaternions.
 Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weightScale)
 {
   const std::size_t n = s.probes.size();
   std::vector<double> w(n);
   double sum = 0.0;
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < n; ++i)
   {
     w[i] = weightScale * s.weights[point * n + i];
     sum += w[i];
   }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    c += w[i] / sum * s.centres[i];
-  }
+  const Eigen::Vector3d& p = s.points[point];
+  Eigen::Vector3d stretched = Eigen::Vector3d::Zero();
   std::vector<Eigen::Quaterniond> rotations;
   std::vector<Eigen::Vector3d> shifts;
-  Eigen::Matrix3d stretch = Eigen::Matrix3d::Zero();
   std::size_t pivot = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    const Eigen::Matrix4d centred = translation(-c) * s.probes[i] * translation(c);
-    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
-      centred.topLeftCorner<3, 3>(), Eigen::ComputeFullU | Eigen::ComputeFullV);
-    rotations.emplace_back(Eigen::Matrix3d(svd.matrixU() * svd.matrixV().transpose()));
-    shifts.push_back(centred.topRightCorner<3, 1>());
-    stretch +=
-      w[i] / sum * svd.matrixV() * svd.singularValues().asDiagonal() * svd.matrixV().transpose();
+    const Eigen::Matrix3d l = s.probes[i].topLeftCorner<3, 3>();
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(l, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::Matrix3d u = svd.matrixU() * svd.matrixV().transpose();
+    const Eigen::Matrix3d stretch =
+      svd.matrixV() * svd.singularValues().asDiagonal() * svd.matrixV().transpose();
+    const Eigen::Vector3d& c = s.centres[i];
+    stretched += w[i] / sum * (c + stretch * (p - c));
+    rotations.emplace_back(u);
+    shifts.push_back(s.probes[i].topRightCorner<3, 1>() + (l - u) * c);
     pivot = w[i] > w[pivot] ? i : pivot;
   }
   Eigen::Vector4d real = Eigen::Vector4d::Zero(), dual = Eigen::Vector4d::Zero();
@@ -333,10 +332,10 @@ Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weig
   const double norm = real.norm();
   const Eigen::Quaterniond q(real / norm), d(dual / norm);
   const Eigen::Quaterniond t = d * q.conjugate();
-  return c + q.toRotationMatrix() * stretch * (s.points[point] - c) + 2.0 * t.vec();
+  return q.toRotationMatrix() * stretched + 2.0 * t.vec();
 }
 
-TEST(ProbeBlend, DualQuaternionWithStretchIsKavansBlendTimesTheLinearBlendOfTheStretches)
+TEST(ProbeBlend, DualQuaternionWithStretchIsKavansTwoPhaseBlend)
 {
   RandomTransforms r(16);
   const Scene s = randomScene(r, TransformClass::GeneralAffine, 4, 300);
