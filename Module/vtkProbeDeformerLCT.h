@@ -11,10 +11,11 @@
  *   motion, twists keep their volume, and a probe's rotation may exceed 2 pi;
  * - MATRIX_LOG: exp(sum_i w_i log A_i) (Alexa 2002); principal logs only;
  * - LINEAR: sum_i w_i A_i, what vtkWeightedTransformFilter does (collapses under twist);
- * - DUAL_QUATERNION: Kavan et al.'s dual-quaternion linear blend of the rigid parts with the
- *   hemisphere check, and the stretches S_i of the polar split blended as matrices,
- *   sum w_i S_i / sum w_i (Kaji & Ochiai Table 2, "Polar+DQ"; Kavan et al. blend scale and shear
- *   so); weights whose sum cancels (negative weights, no normalisation) are an error.
+ * - DUAL_QUATERNION: "Polar+DQ" of Kaji & Ochiai Table 2 in Kavan et al.'s two phases: the
+ *   stretches S_i of the polar split (about each probe's rest centre) blended as matrices,
+ *   sum w_i S_i / sum w_i, then the rigid parts by the dual-quaternion linear blend with the
+ *   hemisphere check; weights whose sum cancels (negative weights, no normalisation) are an
+ *   error when a probe stretches.
  *
  * The log blends are taken about a centre per point, c(p) = sum |w_i| c_i / sum |w_i| of the
  * probes' rest centres c_i (the translation of each rest transform): unlike the paper's
