@@ -367,6 +367,39 @@ TEST(ProbeBlend, DualQuaternionWithStretchIsKavansTwoPhaseBlend)
     lct::blendAtPoint(prepared.set, cancelling, nullptr, 4, map), lct::Status::NumericalFailure);
 }
 
+TEST(ProbeBlend, DualQuaternionWithAStretchThatOverflowsFailsInsteadOfMovingPointsToInfinity)
+{
+  // A probe stretched by 1e200 about a rest centre at 1e150: its stretch phase moves the centre
+  // term (S - I) c beyond double. Both paths (lanes, and point by point with indices)
+  // report the first point as out of range; none writes an infinite point.
+  std::vector<Eigen::Matrix4d> relative(2, Eigen::Matrix4d::Identity());
+  relative[0].topLeftCorner<3, 3>() *= 1e200;
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(1e150, 0, 0),
+    Eigen::Vector3d(0, 0, 1) };
+  const auto prepared = lct::prepareProbes(relative, centres, {}, lct::BlendMode::DualQuaternion);
+  ASSERT_TRUE(prepared.ok());
+  const std::vector<double> in = { 1, 2, 3, 4, 5, 6 };
+  const std::vector<double> weights = { 0.5, 0.5, 0.5, 0.5 };
+  const std::vector<std::int32_t> indices = { 0, 1, 0, 1 };
+  lct::WeightSource source;
+  source.kind = lct::WeightSource::Kind::Slots;
+  source.weights = weights.data();
+  source.slots = 2;
+  std::vector<double> out(in.size(), 7.0);
+  lct::DeformFailure f =
+    lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 2);
+  EXPECT_EQ(f.point, 0);
+  EXPECT_EQ(f.status, lct::Status::OutOfRange);
+  source.indices = indices.data();
+  f = lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 2);
+  EXPECT_EQ(f.point, 0);
+  EXPECT_EQ(f.status, lct::Status::OutOfRange);
+  for (const double x : out)
+  {
+    EXPECT_TRUE(std::isfinite(x));
+  }
+}
+
 TEST(ProbeBlend, TranslatingTheSceneTranslatesTheOutput)
 {
   RandomTransforms r(13);
