@@ -171,30 +171,49 @@ Eigen::Vector3d oracle(lct::BlendMode mode, const Scene& s, int point)
   return c + l + Eigen::Matrix3d(rot.exp()) * Eigen::Matrix3d(sym.exp()) * (p - c);
 }
 
-/// Kavan's DLB written with Eigen's quaternions, for rigid probes: the oracle of DualQuaternion.
-Eigen::Vector3d dualQuaternionOracle(const Scene& s, int point)
+/// Kavan's DLB of the rigid maps x -> rotations_i x + shifts_i with weights w, written with
+/// Eigen's quaternions (hemisphere check against the first heaviest): x -> rotation x + shift.
+struct RigidMap
 {
-  const double* w = &s.weights[point * s.probes.size()];
-  int pivot = 0;
-  for (std::size_t i = 0; i < s.probes.size(); ++i)
+  Eigen::Matrix3d rotation;
+  Eigen::Vector3d shift;
+};
+RigidMap kavanBlend(const std::vector<Eigen::Quaterniond>& rotations,
+  const std::vector<Eigen::Vector3d>& shifts, const double* w)
+{
+  std::size_t pivot = 0;
+  for (std::size_t i = 0; i < rotations.size(); ++i)
   {
-    pivot = w[i] > w[pivot] ? static_cast<int>(i) : pivot;
+    pivot = w[i] > w[pivot] ? i : pivot;
   }
-  const Eigen::Quaterniond qp(Eigen::Matrix3d(s.probes[pivot].topLeftCorner<3, 3>()));
   Eigen::Vector4d real = Eigen::Vector4d::Zero(), dual = Eigen::Vector4d::Zero();
-  for (std::size_t i = 0; i < s.probes.size(); ++i)
+  for (std::size_t i = 0; i < rotations.size(); ++i)
   {
-    const Eigen::Quaterniond q(Eigen::Matrix3d(s.probes[i].topLeftCorner<3, 3>()));
-    const Eigen::Vector3d t = s.probes[i].topRightCorner<3, 1>();
+    const Eigen::Quaterniond& q = rotations[i];
+    const Eigen::Vector3d& t = shifts[i];
     const Eigen::Quaterniond d = Eigen::Quaterniond(0.0, t.x(), t.y(), t.z()) * q;
-    const double sign = q.dot(qp) < 0 ? -1.0 : 1.0;
+    const double sign = q.dot(rotations[pivot]) < 0 ? -1.0 : 1.0;
     real += sign * w[i] * q.coeffs();
     dual += sign * w[i] * 0.5 * d.coeffs();
   }
   const double n = real.norm();
   const Eigen::Quaterniond q(real / n), d(dual / n);
   const Eigen::Quaterniond t = d * q.conjugate();
-  return q.toRotationMatrix() * s.points[point] + 2.0 * t.vec();
+  return { q.toRotationMatrix(), 2.0 * t.vec() };
+}
+
+/// The oracle of DualQuaternion for rigid probes: kavanBlend of the probes themselves.
+Eigen::Vector3d dualQuaternionOracle(const Scene& s, int point)
+{
+  std::vector<Eigen::Quaterniond> rotations;
+  std::vector<Eigen::Vector3d> shifts;
+  for (const Eigen::Matrix4d& a : s.probes)
+  {
+    rotations.emplace_back(Eigen::Matrix3d(a.topLeftCorner<3, 3>()));
+    shifts.push_back(a.topRightCorner<3, 1>());
+  }
+  const RigidMap m = kavanBlend(rotations, shifts, &s.weights[point * s.probes.size()]);
+  return m.rotation * s.points[point] + m.shift;
 }
 
 vtkSmartPointer<vtkMatrix4x4> toVtk(const Eigen::Matrix4d& m)
@@ -289,8 +308,8 @@ TEST(ProbeBlend, DualQuaternionMatchesKavanWithEigenQuaternions)
 
 /// "Polar+DQ" (Kaji & Ochiai Table 2) in Kavan et al.'s two phases, written out with Eigen: each
 /// A_i = [U_i | t_i'] T(c_i) S_i T(-c_i) split by Eigen's SVD (t_i' = t_i + (L_i - U_i) c_i); the
-/// point stretched by sum w_i (c_i + S_i (p - c_i)) / sum w_i, then moved by Kavan's DLB of the
-/// rigid parts with Eigen's quaternions.
+/// point stretched by sum w_i (c_i + S_i (p - c_i)) / sum w_i, then moved by kavanBlend of the
+/// rigid parts.
 Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weightScale)
 {
   const std::size_t n = s.probes.size();
@@ -305,7 +324,6 @@ Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weig
   Eigen::Vector3d stretched = Eigen::Vector3d::Zero();
   std::vector<Eigen::Quaterniond> rotations;
   std::vector<Eigen::Vector3d> shifts;
-  std::size_t pivot = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
     const Eigen::Matrix3d l = s.probes[i].topLeftCorner<3, 3>();
@@ -317,22 +335,9 @@ Eigen::Vector3d polarDualQuaternionOracle(const Scene& s, int point, double weig
     stretched += w[i] / sum * (c + stretch * (p - c));
     rotations.emplace_back(u);
     shifts.push_back(s.probes[i].topRightCorner<3, 1>() + (l - u) * c);
-    pivot = w[i] > w[pivot] ? i : pivot;
   }
-  Eigen::Vector4d real = Eigen::Vector4d::Zero(), dual = Eigen::Vector4d::Zero();
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const Eigen::Quaterniond& q = rotations[i];
-    const Eigen::Quaterniond d =
-      Eigen::Quaterniond(0.0, shifts[i].x(), shifts[i].y(), shifts[i].z()) * q;
-    const double sign = q.dot(rotations[pivot]) < 0 ? -1.0 : 1.0;
-    real += sign * w[i] * q.coeffs();
-    dual += sign * w[i] * 0.5 * d.coeffs();
-  }
-  const double norm = real.norm();
-  const Eigen::Quaterniond q(real / norm), d(dual / norm);
-  const Eigen::Quaterniond t = d * q.conjugate();
-  return q.toRotationMatrix() * stretched + 2.0 * t.vec();
+  const RigidMap m = kavanBlend(rotations, shifts, w.data());
+  return m.rotation * stretched + m.shift;
 }
 
 TEST(ProbeBlend, DualQuaternionWithStretchIsKavansTwoPhaseBlend)
