@@ -446,21 +446,24 @@ ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
         {
           probe.rigid = false;
         }
-        const Eigen::Quaterniond q(expSO3(rotationPart(probe.logs)));
+        const Eigen::Matrix3d u = expSO3(rotationPart(probe.logs));
+        const Eigen::Quaterniond q(u);
         probe.quaternion = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-        // DualQuaternion (Kavan et al.'s two phases): A = [U | t'] T(c) S T(-c) with
-        // t' = t + (L - U) c; the dual part (0, t') q (without the factor 1/2).
-        Eigen::Vector3d rigidTranslation = probe.translation;
-        if (mode == BlendMode::DualQuaternion && !probe.rigid)
+        if (mode == BlendMode::DualQuaternion)
         {
-          Eigen::Matrix3d e = expSym(fromSymmetricVector(symmetricPart(probe.logs)));
-          e.diagonal().array() -= 1.0;
-          probe.stretchMinusIdentity = toSymmetricVector(e);
-          probe.stretchShift = e * probe.centre;
-          const Eigen::Matrix3d u = expSO3(rotationPart(probe.logs));
-          rigidTranslation += (a.topLeftCorner<3, 3>() - u) * probe.centre;
+          // Kavan et al.'s two phases: A = [U | t'] T(c) S T(-c) with t' = t + (L - U) c; the
+          // dual part (0, t') q (without the factor 1/2).
+          Eigen::Vector3d rigidTranslation = probe.translation;
+          if (!probe.rigid)
+          {
+            Eigen::Matrix3d e = expSym(fromSymmetricVector(symmetricPart(probe.logs)));
+            e.diagonal().array() -= 1.0;
+            probe.stretchMinusIdentity = toSymmetricVector(e);
+            probe.stretchShift = e * probe.centre;
+            rigidTranslation += (a.topLeftCorner<3, 3>() - u) * probe.centre;
+          }
+          probe.dual = pureTimes(rigidTranslation, probe.quaternion);
         }
-        probe.dual = pureTimes(rigidTranslation, probe.quaternion);
         break;
       }
       case BlendMode::MatrixLog:

@@ -1,9 +1,6 @@
 #include "lct/ProbeBlendBatch.h"
 
-#include "lct/SO3.h"
 #include "lct/Sym3.h"
-
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
