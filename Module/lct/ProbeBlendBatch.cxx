@@ -185,6 +185,7 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
   batch.probes = n;
   batch.mode = set.mode;
   batch.allRigid = set.allRigid;
+  double side[kProbeBatchMaxProbes];
   for (int k = 0; k < n; ++k)
   {
     const BlendProbe& probe = set.probes[k];
@@ -203,23 +204,30 @@ bool prepareProbeBatch(const ProbeBlendSet& set, ProbeBatchSet& batch)
       batch.stretch[i][k] = symmetricPart(probe.logs)[i];
       batch.stretchMinusIdentity[i][k] = probe.stretchMinusIdentity[i];
     }
-    const Eigen::Vector4d& q = probe.quaternion;
+    // Negating a probe's q and dual part changes no blend bit: the check's sign flips with it,
+    // and a blend negated as a whole gives the same rotation and translation.
+    side[k] = probe.quaternion.dot(set.probes[0].quaternion) < 0.0 ? -1.0 : 1.0;
     for (int r = 0; r < 4; ++r)
     {
-      batch.quaternion[r][k] = q[r];
-      batch.dual[r][k] = probe.dual[r];
+      batch.quaternion[r][k] = side[k] * probe.quaternion[r];
+      batch.dual[r][k] = side[k] * probe.dual[r];
     }
     for (int r = 0; r < 3; ++r)
     {
       batch.stretchShift[r][k] = probe.stretchShift[r];
     }
   }
+  batch.oneHemisphere = true;
   for (int k = 0; k < n; ++k)
   {
     for (int pivot = 0; pivot < n; ++pivot)
     {
-      batch.hemisphere[k][pivot] =
+      // lct::blendAtPoint's sign (a product exactly 0 counts as one side), carried over to
+      // the negated quaternions, so that the lanes blend exactly what it blends.
+      const double check =
         set.probes[k].quaternion.dot(set.probes[pivot].quaternion) < 0.0 ? -1.0 : 1.0;
+      batch.hemisphere[k][pivot] = side[k] * side[pivot] * check;
+      batch.oneHemisphere = batch.oneHemisphere && batch.hemisphere[k][pivot] > 0.0;
     }
   }
   return true;

@@ -53,12 +53,17 @@ struct ProbeBatchSet
   double linearMinusIdentity[9][kProbeBatchMaxProbes];  ///< row-major L_k - I
   double translation[3][kProbeBatchMaxProbes];
   double centre[3][kProbeBatchMaxProbes];
-  double quaternion[4][kProbeBatchMaxProbes]; ///< DualQuaternion: (w, x, y, z)
-  double dual[4][kProbeBatchMaxProbes];       ///< DualQuaternion: (0, t_k') q_k (BlendProbe::dual)
+  /// DualQuaternion: (w, x, y, z), the sign of probe 0's side (q and -q are the same turn)
+  double quaternion[4][kProbeBatchMaxProbes];
+  double dual[4][kProbeBatchMaxProbes]; ///< DualQuaternion: (0, t_k') q_k (BlendProbe::dual)
   double stretchShift[3][kProbeBatchMaxProbes]; ///< DualQuaternion: (S_k - I) c_k
   /// DualQuaternion: -1 where probe k's rotation is in the other hemisphere than probe p's
   /// (Kavan's check, against the point's heaviest probe p), else 1: [k][p].
   double hemisphere[kProbeBatchMaxProbes][kProbeBatchMaxProbes];
+  /// DualQuaternion: every entry of `hemisphere` is 1 (every two probes turn by less than pi
+  /// relative to each other, as the bones of a character usually do), so the check cannot flip
+  /// a probe and the lanes skip finding the heaviest probe.
+  bool oneHemisphere = false;
 };
 
 /// Whether `set` can be blended in lanes (Polar, Linear or DualQuaternion, at most
