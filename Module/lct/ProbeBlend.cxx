@@ -190,6 +190,15 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
   {
     return Status::Ok;
   }
+  if (!std::isfinite(heaviest))
+  {
+    return Status::NonFinite;
+  }
+  // The blend depends on the ratios of the weights only, but |sum w q|^2 leaves double's range
+  // for weights beyond 2^+-480 (possible without normalisation): those are scaled by a power of
+  // two, which changes no bit of the blend.
+  const int exponent =
+    heaviest > 0x1p-480 && heaviest < 0x1p480 ? 0 : -std::ilogb(heaviest);
   // Kavan et al.'s two phases, A_k = [U_k | t'_k] T(c_k) S_k T(-c_k): the stretches about their
   // probes' centres blended linearly, then the rigid parts by DLB. Both commute with translating
   // the scene, so no per-point centre is needed.
@@ -202,7 +211,7 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
   double total = 0.0, sum = 0.0;
   for (int k = 0; k < slots; ++k)
   {
-    double w = weights[k];
+    double w = exponent == 0 ? weights[k] : std::ldexp(weights[k], exponent);
     if (w == 0.0)
     {
       continue;

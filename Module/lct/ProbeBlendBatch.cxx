@@ -106,7 +106,7 @@ int blendLanesForTest(const ProbeBlendSet& set, const ProbeBatchSet& p,
   }
   for (int j = 0; j < count; ++j)
   {
-    if (flags.cancel[j])
+    if (flags.cancel[j] || flags.redoFailed[j])
     {
       return j;
     }

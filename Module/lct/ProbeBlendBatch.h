@@ -101,8 +101,9 @@ struct ProbeBatchMaps
 
 /// The lanes' blend on its own, for tests: the maps of `count` <= kProbeBatch points whose
 /// `weights` are already normalised (`sumsToOne`; Linear mode adds (sum w - 1) I otherwise).
-/// Returns the first point whose blend fails (a DualQuaternion blend whose rotations cancel),
-/// or -1. Lanes past `count` are left unspecified.
+/// Returns the first point whose blend fails (a DualQuaternion blend whose rotations cancel, or a
+/// lane beyond the lanes' range that lct::blendAtPoint refuses), or -1. Lanes past `count` are
+/// left unspecified.
 VTKLCT_EXPORT int blendBatch(const ProbeBlendSet& set, const ProbeBatchSet& batch,
   const ProbeBatchWeights& weights, int count, bool sumsToOne, ProbeBatchMaps& maps);
 

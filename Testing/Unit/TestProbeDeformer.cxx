@@ -7,6 +7,8 @@
 #include "lct/Affine.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/ProbeBlend.h"
+#include "lct/ProbeBlendBatch.h"
+#include "lct/SO3.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
@@ -402,6 +404,62 @@ TEST(ProbeBlend, DualQuaternionWithAStretchThatOverflowsFailsInsteadOfMovingPoin
   for (const double x : out)
   {
     EXPECT_TRUE(std::isfinite(x));
+  }
+}
+
+TEST(ProbeBlend, DualQuaternionWeightsBeyondTheSquareRootOfDoubleBlendAsTheirRatios)
+{
+  // Kavan's DLB divides by |sum w q|, so weights scaled by any factor blend alike. Without
+  // normalisation, weights of 1e200 square beyond double in |sum w q|^2: the blend must still
+  // turn the point (not leave it at rest), by the lanes and point by point.
+  std::vector<Eigen::Matrix4d> relative(2, Eigen::Matrix4d::Identity());
+  relative[1].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0, 0, 1.5));
+  relative[1].topRightCorner<3, 1>() = Eigen::Vector3d(1, 2, 3);
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(0, 0, 0),
+    Eigen::Vector3d(1, 0, 0) };
+  const auto prepared = lct::prepareProbes(relative, centres, {}, lct::BlendMode::DualQuaternion);
+  ASSERT_TRUE(prepared.ok());
+  lct::PointMap unit;
+  const double half[] = { 0.5, 0.5 };
+  ASSERT_EQ(lct::blendAtPoint(prepared.set, half, nullptr, 2, unit), lct::Status::Ok);
+  const Eigen::Vector3d p(0.3, -2.0, 1.0), expected = unit.apply(p);
+  ASSERT_GT((expected - p).norm(), 0.5);
+  for (const double scale : { 1e-300, 1e-160, 1e160, 1e200, 1e300 })
+  {
+    const double huge[] = { scale, scale };
+    lct::PointMap map;
+    ASSERT_EQ(lct::blendAtPoint(prepared.set, huge, nullptr, 2, map), lct::Status::Ok) << scale;
+    EXPECT_LE((map.apply(p) - expected).norm(), 1e-12) << scale;
+    // 9 points: a full block of 4 or 8 lanes and a partial one.
+    std::vector<double> in, weights, out(27, 7.0);
+    for (int i = 0; i < 9; ++i)
+    {
+      in.insert(in.end(), { p[0], p[1], p[2] });
+      weights.insert(weights.end(), { scale, scale });
+    }
+    lct::WeightSource source;
+    source.kind = lct::WeightSource::Kind::Slots;
+    source.normalization = lct::WeightNormalization::None;
+    source.weights = weights.data();
+    source.slots = 2;
+    for (const int lanes : { 0, 4 })
+    {
+      lct::ProbeBatchSet batch;
+      ASSERT_TRUE(lct::prepareProbeBatch(prepared.set, batch));
+      const lct::DeformFailure f = lct::deformBatch(
+        prepared.set, batch, source, in.data(), out.data(), true, nullptr, 0, 0, 9, lanes);
+      EXPECT_TRUE(f.ok()) << scale;
+      for (int i = 0; i < 9; ++i)
+      {
+        EXPECT_LE((Eigen::Vector3d(out[3 * i], out[3 * i + 1], out[3 * i + 2]) - expected).norm(),
+          1e-12)
+          << scale << " lanes " << lanes << " point " << i;
+      }
+    }
+    const lct::DeformFailure f =
+      lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 9);
+    EXPECT_TRUE(f.ok()) << scale;
+    EXPECT_LE((Eigen::Vector3d(out[0], out[1], out[2]) - expected).norm(), 1e-12) << scale;
   }
 }
 
