@@ -76,15 +76,16 @@ vtkPolyData* bar()
   return b;
 }
 
-/// Probe k at (0, 0, 5 + 10 k): rest T(c_k); current T(c_k) R_k (S_k) with twists of up to
-/// 135 degrees about z and, for the affine set, a stretch with shear.
+/// Probe k at (0, 0, 5 + 10 k): rest T(c_k); current T(c_k) R_k (S_k) with twists of `twist` k
+/// degrees about z (up to 135 by default: every two probes turn by less than 180 degrees
+/// relative to each other) and, for the affine set, a stretch with shear.
 struct ProbeSet
 {
   std::vector<vtkSmartPointer<vtkTransform>> current, rest;
   std::vector<vtkSmartPointer<vtkTransform>> relative; // current rest^-1, for VTK's filter
 };
 
-ProbeSet makeProbes(bool affine)
+ProbeSet makeProbes(bool affine, double twist = 45.0)
 {
   ProbeSet s;
   for (int k = 0; k < kProbes; ++k)
@@ -94,7 +95,7 @@ ProbeSet makeProbes(bool affine)
     rest->Translate(0, 0, c);
     auto current = vtkSmartPointer<vtkTransform>::New();
     current->Translate(0.5 * k, 0, c);
-    current->RotateZ(45.0 * k);
+    current->RotateZ(twist * k);
     current->RotateX(10.0 * k);
     if (affine)
     {
@@ -164,6 +165,30 @@ void ProbeDeformer(benchmark::State& state)
   state.SetItemsProcessed(state.iterations() * gPoints);
 }
 
+/// DualQuaternion with twists of 0, 80, 160 and 240 degrees: probe pairs more than 180 degrees
+/// apart, so the lanes run Kavan's hemisphere check per point. Arg: affine; 2 threads.
+void ProbeDeformerWideTwists(benchmark::State& state)
+{
+  const ProbeSet probes = makeProbes(state.range(0) != 0, 80.0);
+  vtkNew<vtkProbeDeformerLCT> f;
+  f->SetInputData(bar());
+  for (int k = 0; k < kProbes; ++k)
+  {
+    f->AddProbe(probes.current[k], probes.rest[k]);
+  }
+  f->SetBlendModeToDualQuaternion();
+  f->SetWeightModeToPointData();
+  f->SetWeightArrayName("weights");
+  vtkSMPTools::Initialize(2);
+  for (auto _ : state)
+  {
+    f->Modified();
+    f->Update();
+    benchmark::DoNotOptimize(f->GetOutput()->GetPoints()->GetPoint(0));
+  }
+  state.SetItemsProcessed(state.iterations() * gPoints);
+}
+
 BENCHMARK(VtkWeightedTransformFilter)
   ->ArgName("affine")
   ->Arg(0)
@@ -177,6 +202,12 @@ BENCHMARK(ProbeDeformer)
     { 0, 1 }, { 1, 2 }, { 1 } })
   ->Args({ vtkProbeDeformerLCT::POLAR, 0, 2, 0 })
   ->Args({ vtkProbeDeformerLCT::POLAR, 1, 2, 0 })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(ProbeDeformerWideTwists)
+  ->ArgName("affine")
+  ->Arg(0)
+  ->Arg(1)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 
@@ -223,6 +254,14 @@ int printTable(const lct_bench::RecordingReporter& reporter, bool check)
     {
       std::printf("    %-15s 2 threads %6.1f M/s (%.2fx) with inverse-distance weights\n", "Polar",
         rate(distance), vtk / distance);
+    }
+    const double wide =
+      reporter.Get("ProbeDeformerWideTwists/affine:" + std::to_string(affine) + "/real_time");
+    if (wide > 0)
+    {
+      std::printf("    %-15s 2 threads %6.1f M/s (%.2fx) with twists of 0-240 degrees (probes on "
+                  "both sides: the hemisphere check per point)\n",
+        "DualQuaternion", rate(wide), vtk / wide);
     }
   }
   return check && missed ? 1 : 0;
