@@ -1,6 +1,7 @@
 #include "lct/ProbeBlend.h"
 
 #include "lct/Affine.h"
+#include "lct/Conditioning.h"
 #include "lct/MatrixLogParametrisation.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/ProbeBlendBatch.h"
@@ -112,6 +113,17 @@ Status polarBlend(const ProbeBlendSet& set, const double* weights, const std::in
   // psi(T(-c) A_i T(c)) = (A_i c - c, w_i, Y_i): only the translation depends on the centre,
   // linearly, so its blend is (sum w_i (L_i - I)) c + sum w_i t_i.
   map.shift = linearSum * map.centre + translationSum;
+  // Unnormalised weights can wind the blended turn beyond what double resolves (sin of 1e100
+  // radians is any value).
+  const double turn = rotation.norm();
+  if (!std::isfinite(turn))
+  {
+    return Status::OutOfRange;
+  }
+  if (turn > kMaxRotationWinding)
+  {
+    return Status::InaccurateResult;
+  }
   const Eigen::Matrix3d rotationMinusIdentity = expSO3MinusIdentity(rotation);
   map.linearMinusIdentity = (set.allRigid || stretch.isZero(0.0))
     ? rotationMinusIdentity

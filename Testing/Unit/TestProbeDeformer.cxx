@@ -463,6 +463,66 @@ TEST(ProbeBlend, DualQuaternionWeightsBeyondTheSquareRootOfDoubleBlendAsTheirRat
   }
 }
 
+TEST(ProbeBlend, LogBlendWeightsThatWindTheTurnBeyondDoubleAreRefused)
+{
+  // Without normalisation the Polar blend of two probes turning 1.5 rad is a turn of
+  // 3 w radians: at w = 1e100 no digit of its sine is known (an error, not a random rotation),
+  // at w = 1e300 it overflows; at w = 1e8 it is still resolved. Lanes and point by point agree.
+  std::vector<Eigen::Matrix4d> relative(2, Eigen::Matrix4d::Identity());
+  relative[0].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0, 0, 1.5));
+  relative[1].topLeftCorner<3, 3>() = relative[0].topLeftCorner<3, 3>();
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(0, 0, 0),
+    Eigen::Vector3d(1, 0, 0) };
+  const auto prepared = lct::prepareProbes(relative, centres, {}, lct::BlendMode::Polar);
+  ASSERT_TRUE(prepared.ok());
+  for (const auto& [scale, expected] : { std::pair{ 1e8, lct::Status::Ok },
+         std::pair{ 1e100, lct::Status::InaccurateResult },
+         std::pair{ 1e300, lct::Status::OutOfRange } })
+  {
+    const double weights[] = { scale, scale };
+    lct::PointMap map;
+    EXPECT_EQ(lct::blendAtPoint(prepared.set, weights, nullptr, 2, map), expected) << scale;
+    std::vector<double> in(27, 1.0), raw, out(27, 7.0);
+    for (int i = 0; i < 9; ++i)
+    {
+      raw.insert(raw.end(), { scale, scale });
+    }
+    lct::WeightSource source;
+    source.kind = lct::WeightSource::Kind::Slots;
+    source.normalization = lct::WeightNormalization::None;
+    source.weights = raw.data();
+    source.slots = 2;
+    lct::ProbeBatchSet batch;
+    ASSERT_TRUE(lct::prepareProbeBatch(prepared.set, batch));
+    for (const int lanes : { 0, 4 })
+    {
+      const lct::DeformFailure f = lct::deformBatch(
+        prepared.set, batch, source, in.data(), out.data(), true, nullptr, 0, 0, 9, lanes);
+      EXPECT_EQ(f.status, expected) << scale << " lanes " << lanes;
+      EXPECT_EQ(f.point, expected == lct::Status::Ok ? -1 : 0);
+    }
+    const lct::DeformFailure f =
+      lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 9);
+    EXPECT_EQ(f.status, expected) << scale;
+    for (const double x : out)
+    {
+      EXPECT_TRUE(std::isfinite(x));
+    }
+  }
+  // MatrixLog (point by point only): the same turns.
+  const auto matrixLog = lct::prepareProbes(relative, centres, {}, lct::BlendMode::MatrixLog);
+  ASSERT_TRUE(matrixLog.ok());
+  for (const auto& [scale, ok] : { std::pair{ 1e8, true }, std::pair{ 1e100, false },
+         std::pair{ 1e300, false } })
+  {
+    const double weights[] = { scale, scale };
+    lct::PointMap map;
+    const lct::Status s = lct::blendAtPoint(matrixLog.set, weights, nullptr, 2, map);
+    EXPECT_EQ(s == lct::Status::Ok, ok) << scale << " " << lct::describe(s);
+    EXPECT_TRUE(map.linearMinusIdentity.allFinite() && map.shift.allFinite());
+  }
+}
+
 TEST(ProbeBlend, TranslatingTheSceneTranslatesTheOutput)
 {
   RandomTransforms r(13);
