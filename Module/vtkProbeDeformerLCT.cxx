@@ -683,6 +683,9 @@ int vtkProbeDeformerLCT::RequestData(
                     << (failure.status == lct::Status::NumericalFailure
                            ? " (its weighted rotations cancel, or with stretched probes its "
                              "weights sum to 0: NormalizationToLinear keeps them from that)"
+                           : failure.status == lct::Status::InaccurateResult
+                           ? " (its weights wind the blended turn beyond 1e9 radians: "
+                             "NormalizationToLinear keeps them from that)"
                            : ""));
       return fail();
     }

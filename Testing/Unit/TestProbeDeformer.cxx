@@ -1153,6 +1153,11 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
     w->SetTuple2(1, 2.0, -2.0);
     w->Modified();
     expectRefused(g, "weights sum to 0", 2);
+    // Polar: unnormalised weights that wind the turn beyond what double resolves.
+    g->SetBlendModeToPolar();
+    w->SetTuple2(1, 1e100, 1e100);
+    w->Modified();
+    expectRefused(g, "wind the blended turn", 2);
   }
 }
 
