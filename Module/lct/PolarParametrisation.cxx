@@ -74,7 +74,9 @@ Result<LogCoords> polarLog(const Eigen::Matrix4d& m, const Eigen::Vector3d* rota
   rotationPart(out.value) =
     rotationReference ? logSO3Nearest(f.rotation, *rotationReference) : logSO3(f.rotation);
   symmetricPart(out.value) = toSymmetricVector(logStretch);
-  if (!out.value.allFinite())
+  // The branch nearest a reference just below kMaxRotationWinding can lie up to pi beyond it:
+  // polarExp would refuse it.
+  if (!out.value.allFinite() || rotationPart(out.value).norm() > kMaxRotationWinding)
   {
     return R::failure(Status::OutOfRange);
   }
@@ -144,6 +146,12 @@ Result<Eigen::Matrix4d> polarExp(const LogCoords& c)
   if (!out.value.allFinite())
   {
     return R::failure(Status::OutOfRange);
+  }
+  // Wound further, the turn keeps fewer than 7 digits below a turn (sin of 1e100 radians is any
+  // value): a scalar multiple or a weighted sum of logs can get there.
+  if (rotationPart(c).norm() > kMaxRotationWinding)
+  {
+    return R::failure(Status::InaccurateResult);
   }
   return out;
 }

@@ -25,8 +25,8 @@ namespace lct
 {
 
 /// psi(M). Fails with NonFinite (M or the reference), NotAffine, NegativeDeterminant, Singular,
-/// IllConditioned (lct/Conditioning.h) or OutOfRange (a subnormal stretch, or a reference wound
-/// beyond kMaxRotationWinding).
+/// IllConditioned (lct/Conditioning.h) or OutOfRange (a subnormal stretch, or a reference or
+/// its nearest branch wound beyond kMaxRotationWinding).
 VTKLCT_EXPORT Result<LogCoords> polarLog(
   const Eigen::Matrix4d& m, const Eigen::Vector3d* rotationReference = nullptr);
 
@@ -38,9 +38,10 @@ VTKLCT_EXPORT Result<LogCoords> polarInverse(const LogCoords& c);
 /// commits a state with its inverse), without exponentiating c again.
 VTKLCT_EXPORT Result<LogCoords> polarInverse(const LogCoords& c, const Eigen::Matrix4d& m);
 
-/// phi(c). Fails with NonFinite (c not finite), OutOfRange (the result overflows, or a stretch
-/// underflows below the normal range) or IllConditioned (stretch condition number above
-/// kMaxConditionNumber: the result could not hold its smallest stretch).
+/// phi(c). Fails with NonFinite (c not finite), InaccurateResult (a turn wound beyond
+/// kMaxRotationWinding), OutOfRange (the result overflows, or a stretch underflows below the
+/// normal range) or IllConditioned (stretch condition number above kMaxConditionNumber: the
+/// result could not hold its smallest stretch).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> polarExp(const LogCoords& c);
 
 } // namespace lct

@@ -756,6 +756,39 @@ TEST(FuzzFindings, D33MatrixLogExpOfATurnWoundBeyondTheLimitIsRefused)
   EXPECT_EQ(errors->Count, 1) << errors->Last;
 }
 
+TEST(Robustness, PolarExpOfATurnWoundBeyondTheLimitIsRefused)
+{
+  // The Polar exp took sin and cos of any turn: Scale(1e100) of a 60-degree turn returned 1
+  // with an arbitrary rotation, Scale(1e12) one off by 1e-4. Beyond kMaxRotationWinding (1e9
+  // rad, the MatrixLog limit too) it is an error with the state kept; at 1e6 it is still exact
+  // to the angle's precision (60e6 degrees = 240 degrees mod 360).
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> errors;
+  t->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkTransform> turn;
+  turn->RotateZ(60.0);
+  for (const double s : { 1e12, 1e100 })
+  {
+    ASSERT_EQ(t->SetMatrix(turn->GetMatrix()), 1);
+    const vtkMTimeType mtime = t->GetMTime();
+    EXPECT_EQ(t->Scale(s), 0) << s;
+    EXPECT_TRUE(contains(errors->Last, "cannot be computed accurately")) << errors->Last;
+    EXPECT_EQ(t->GetMTime(), mtime);
+    EXPECT_NEAR(t->GetMatrix()->GetElement(0, 0), 0.5, 1e-15);
+  }
+  const int before = errors->Count;
+  ASSERT_EQ(t->SetMatrix(turn->GetMatrix()), 1);
+  ASSERT_EQ(t->Scale(1e6), 1) << errors->Last;
+  EXPECT_NEAR(t->GetMatrix()->GetElement(0, 0), -0.5, 1e-9);
+  EXPECT_NEAR(t->GetMatrix()->GetElement(1, 0), -std::sqrt(0.75), 1e-9);
+  EXPECT_EQ(errors->Count, before);
+  // Log coordinates wound beyond the limit, as D33 for MatrixLog.
+  const double wound[12] = { 0, 0, 0, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0,
+    0, 0 };
+  EXPECT_EQ(t->SetLogCoordinates(wound), 0);
+  EXPECT_TRUE(contains(errors->Last, "cannot be computed accurately")) << errors->Last;
+}
+
 TEST(FuzzFindings, D19KeysWhoseCurveNeedsAMissingLogAreRefused)
 {
   // lct-render accepted the cube track and stopped mid-render ("interpolating props.cube at
