@@ -26,7 +26,7 @@ namespace
 /// point by less than that.
 constexpr double kRigidStretchTolerance = 64.0 * std::numeric_limits<double>::epsilon();
 
-/// R - I of a unit quaternion (w, x, y, z), without forming I.
+/// |q|^2 (R - I) of a quaternion q = (w, x, y, z): R - I itself for a unit one.
 Eigen::Matrix3d quaternionMinusIdentity(const Eigen::Vector4d& q)
 {
   const double w = q[0], x = q[1], y = q[2], z = q[3];
@@ -243,19 +243,18 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
     real += w * probe.quaternion;
     dual += w * probe.dual;
   }
-  const double norm = real.norm();
-  if (!(norm > 1e-12 * total))
+  const double norm2 = real.squaredNorm(), least = 1e-12 * total; // |real| > least, squared
+  if (!(norm2 > least * least))
   {
     return Status::NumericalFailure;
   }
-  const double inverse = 1.0 / norm;
-  const Eigen::Vector4d q = real * inverse;
-  const Eigen::Vector4d e = dual * (0.5 * inverse);
-  // t = 2 vec(e q*) (Kavan et al. 2008, Alg. 1); the part of e along q drops out.
-  map.shift = 2.0 *
-    (q[0] * e.tail<3>() - e[0] * q.tail<3>() +
-      Eigen::Vector3d(q.tail<3>()).cross(Eigen::Vector3d(e.tail<3>())));
-  const Eigen::Matrix3d rotationMinusIdentity = quaternionMinusIdentity(q);
+  // No square root: with q = real / |real| and e = dual / (2 |real|), t = 2 vec(e q*) (Kavan et
+  // al. 2008, Alg. 1; the part of e along q drops out) and every entry of R - I are products of
+  // two of real's and dual's components over |real|^2.
+  const double inverse2 = 1.0 / norm2;
+  const Eigen::Vector3d u = real.tail<3>(), v = dual.tail<3>();
+  map.shift = inverse2 * (real[0] * v - dual[0] * u + u.cross(v));
+  const Eigen::Matrix3d rotationMinusIdentity = quaternionMinusIdentity(real) * inverse2;
   if (set.allRigid || (stretch.isZero(0.0) && stretchShift.isZero(0.0)))
   {
     map.linearMinusIdentity = rotationMinusIdentity;
