@@ -321,41 +321,6 @@ bool allFinite(const PointMap& map)
   return map.linearMinusIdentity.allFinite() && map.shift.allFinite() && map.centre.allFinite();
 }
 
-/// Raw distance weights of point p over every probe.
-void distanceWeights(
-  const ProbeBlendSet& set, const WeightSource& source, const Eigen::Vector3d& p, double* w)
-{
-  const int n = static_cast<int>(set.probes.size());
-  const bool squared = source.exponent == 2.0;
-  const bool unit = source.exponent == 1.0;
-  bool onCentre = false;
-  for (int i = 0; i < n; ++i)
-  {
-    const double d2 = (p - set.probes[i].centre).squaredNorm();
-    const double r = source.radii[i];
-    if (source.kind == WeightSource::Kind::InverseDistance)
-    {
-      const double dp = squared ? d2 : unit ? std::sqrt(d2) : std::pow(d2, 0.5 * source.exponent);
-      w[i] = r / dp;
-      onCentre = onCentre || std::isinf(w[i]);
-    }
-    else
-    {
-      const double d = std::sqrt(d2);
-      const double x = d <= r ? (r - d) / r : 0.0;
-      w[i] = squared ? x * x : unit ? x : std::pow(x, source.exponent);
-    }
-  }
-  if (onCentre)
-  {
-    // The limit of r / d^p as the point reaches a centre: that probe alone (ties share).
-    for (int i = 0; i < n; ++i)
-    {
-      w[i] = std::isinf(w[i]) ? 1.0 : 0.0;
-    }
-  }
-}
-
 template <typename Real>
 void carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d& d, std::int64_t i)
 {
@@ -515,6 +480,64 @@ Status blendAtPoint(const ProbeBlendSet& set, const double* weights, const std::
     return s;
   }
   return allFinite(map) ? Status::Ok : Status::OutOfRange;
+}
+
+void distanceWeights(
+  const ProbeBlendSet& set, const WeightSource& source, const Eigen::Vector3d& p, double* w)
+{
+  const int n = static_cast<int>(set.probes.size());
+  const bool squared = source.exponent == 2.0;
+  const bool unit = source.exponent == 1.0;
+  const bool inverse = source.kind == WeightSource::Kind::InverseDistance;
+  bool onCentre = false, beyondSquares = false;
+  double largest = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const double d2 = (p - set.probes[i].centre).squaredNorm();
+    const double r = source.radii[i];
+    if (inverse)
+    {
+      const double dp = squared ? d2 : unit ? std::sqrt(d2) : std::pow(d2, 0.5 * source.exponent);
+      w[i] = r / dp;
+      onCentre = onCentre || std::isinf(w[i]);
+      beyondSquares = beyondSquares || std::isinf(d2);
+      largest = std::max(largest, w[i]);
+    }
+    else
+    {
+      const double d = std::sqrt(d2);
+      const double x = d <= r ? (r - d) / r : 0.0;
+      w[i] = squared ? x * x : unit ? x : std::pow(x, source.exponent);
+    }
+  }
+  if (onCentre)
+  {
+    // The limit of r / d^p as the point reaches a centre: that probe alone (ties share).
+    for (int i = 0; i < n; ++i)
+    {
+      w[i] = std::isinf(w[i]) ? 1.0 : 0.0;
+    }
+    return;
+  }
+  if (inverse && source.normalization == WeightNormalization::Linear &&
+    (beyondSquares || largest < kSmallestDistanceWeight))
+  {
+    // Far from every centre r / d^p underflows (or d^2 overflows): the weights would be 0, and
+    // the point would stay put. Linear normalisation needs only their ratios, so they are taken
+    // relative to the nearest centre, r (d_min / d)^p, with d measured without squaring.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i)
+    {
+      w[i] = (p - set.probes[i].centre).stableNorm();
+      nearest = std::min(nearest, w[i]);
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      const double ratio = nearest / w[i];
+      w[i] = source.radii[i] *
+        (squared ? ratio * ratio : unit ? ratio : std::pow(ratio, source.exponent));
+    }
+  }
 }
 
 Status normalizeWeights(WeightNormalization normalization, double* weights, int count)

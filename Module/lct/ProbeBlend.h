@@ -170,6 +170,19 @@ struct DeformFailure
   bool ok() const noexcept { return status == Status::Ok; }
 };
 
+/// The smallest largest raw InverseDistance weight of a point taken as computed; below it
+/// (a point about 1e145 times a probe radius from every centre, with exponent 2) distanceWeights
+/// takes them relative to the nearest centre.
+constexpr double kSmallestDistanceWeight = 0x1p-960;
+
+/// The raw InverseDistance or Cutoff weights of point p over every probe, as deformPoints takes
+/// them: r_k / d_k^p (a point on a centre takes that probe alone, ties share) or
+/// ((r_k - d_k) / r_k)^p within r_k. Under Linear normalisation, InverseDistance weights that
+/// would underflow (or whose d^2 overflows) are r_k (d_min / d_k)^p instead: the same
+/// normalised weights, where the raw ones would all be 0 and leave the point at rest.
+VTKLCT_EXPORT void distanceWeights(
+  const ProbeBlendSet& set, const WeightSource& source, const Eigen::Vector3d& p, double* w);
+
 /// Raw weights of a point normalised as asked. Fails with InvalidArgument when Linear
 /// normalisation meets a non-positive sum of weights that are not all zero; all-zero weights
 /// come back all zero (the point stays put).

@@ -523,6 +523,70 @@ TEST(ProbeBlend, LogBlendWeightsThatWindTheTurnBeyondDoubleAreRefused)
   }
 }
 
+TEST(ProbeBlend, InverseDistanceWeightsOfFarPointsAreTheirLimitNotZero)
+{
+  // r / d^p underflows far from every centre (d = 1e200, p = 2: 1e-400) and d^2 overflows from
+  // 1.4e154 on: every weight was 0 and the point stayed put. Linear normalisation needs only
+  // their ratios, r_k (d_min / d_k)^p, here r_k / sum r (the distances agree to 1e-200): the
+  // point moves by the blend with weights 1/4, 3/4, by the lanes and point by point.
+  std::vector<Eigen::Matrix4d> relative(2, Eigen::Matrix4d::Identity());
+  relative[0].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0, 0, 1.0));
+  relative[1].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0.5, 0, 0));
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(0, 0, 0),
+    Eigen::Vector3d(1, 0, 0) };
+  const double radii[] = { 1.0, 3.0 };
+  for (const lct::BlendMode mode : { lct::BlendMode::Polar, lct::BlendMode::Linear,
+         lct::BlendMode::DualQuaternion, lct::BlendMode::MatrixLog })
+  {
+    const auto prepared = lct::prepareProbes(relative, centres, {}, mode);
+    ASSERT_TRUE(prepared.ok());
+    const double quarter[] = { 0.25, 0.75 };
+    lct::PointMap limit;
+    ASSERT_EQ(lct::blendAtPoint(prepared.set, quarter, nullptr, 2, limit), lct::Status::Ok);
+    for (const double far : { 1e20, 1e160, 1e200, 1e300 })
+    {
+      for (const double exponent : { 1.0, 2.0, 1.5 })
+      {
+        const Eigen::Vector3d p(far, 0.5 * far, -0.25 * far), expected = limit.apply(p);
+        std::vector<double> in, out(27, 7.0);
+        for (int i = 0; i < 9; ++i)
+        {
+          in.insert(in.end(), { p[0], p[1], p[2] });
+        }
+        lct::WeightSource source;
+        source.kind = lct::WeightSource::Kind::InverseDistance;
+        source.radii = radii;
+        source.exponent = exponent;
+        const auto check = [&](const char* path) {
+          for (int i = 0; i < 9; ++i)
+          {
+            const Eigen::Vector3d got(out[3 * i], out[3 * i + 1], out[3 * i + 2]);
+            // (stableNorm: the squares of these coordinates overflow)
+            EXPECT_LE((got - expected).stableNorm(), 1e-12 * p.stableNorm())
+              << path << " mode " << static_cast<int>(mode) << " at " << far << " exponent "
+              << exponent << " point " << i;
+          }
+        };
+        ASSERT_TRUE(lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 9)
+                      .ok());
+        check("point by point");
+        lct::ProbeBatchSet batch;
+        if (lct::prepareProbeBatch(prepared.set, batch))
+        {
+          for (const int lanes : { 0, 4 })
+          {
+            std::fill(out.begin(), out.end(), 7.0);
+            ASSERT_TRUE(lct::deformBatch(prepared.set, batch, source, in.data(), out.data(), true,
+              nullptr, 0, 0, 9, lanes)
+                          .ok());
+            check(lanes == 4 ? "4 lanes" : "lanes");
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(ProbeBlend, TranslatingTheSceneTranslatesTheOutput)
 {
   RandomTransforms r(13);
