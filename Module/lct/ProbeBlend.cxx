@@ -322,7 +322,7 @@ bool allFinite(const PointMap& map)
 }
 
 template <typename Real>
-void carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d& d, std::int64_t i)
+bool carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d& d, std::int64_t i)
 {
   const Eigen::Vector3d v(static_cast<double>(in[3 * i]), static_cast<double>(in[3 * i + 1]),
     static_cast<double>(in[3 * i + 2]));
@@ -334,12 +334,19 @@ void carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d&
   }
   else if (isNormal)
   {
-    // cof(M) = det(M) M^-T: rows r1 x r2, r2 x r0, r0 x r1 of M = I + D.
+    // cof(M) = det(M) M^-T: rows r1 x r2, r2 x r0, r0 x r1 of M = I + D, of M scaled to
+    // entries of at most 1 (cof(s M) = s^2 cof(M) points the same way; the entries of a
+    // stretch of 1e160 or 1e-160 would square out of double and leave a normal of 0 or NaN).
     Eigen::Matrix3d m = d;
     m.diagonal().array() += 1.0;
+    const double largest = m.cwiseAbs().maxCoeff();
+    if (largest > 0.0 && std::isfinite(largest))
+    {
+      m /= largest;
+    }
     const Eigen::Vector3d r0 = m.row(0), r1 = m.row(1), r2 = m.row(2);
     r = Eigen::Vector3d(r1.cross(r2).dot(v), r2.cross(r0).dot(v), r0.cross(r1).dot(v));
-    const double norm = r.norm();
+    const double norm = r.stableNorm();
     if (norm > 0.0)
     {
       r /= norm;
@@ -349,24 +356,26 @@ void carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d&
   {
     r = v + d * v;
   }
+  // A vector stretched beyond double (or, for float arrays, beyond float) is not written.
+  if (!r.allFinite() ||
+    !(r.cwiseAbs().maxCoeff() <= static_cast<double>(std::numeric_limits<Real>::max())))
+  {
+    return false;
+  }
   for (int k = 0; k < 3; ++k)
   {
     out[3 * i + k] = static_cast<Real>(r[k]);
   }
+  return true;
 }
 
 } // namespace
 
-void carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i)
+bool carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i)
 {
-  if (c.isDouble)
-  {
-    carryTyped(static_cast<const double*>(c.in), static_cast<double*>(c.out), c.isNormal, d, i);
-  }
-  else
-  {
-    carryTyped(static_cast<const float*>(c.in), static_cast<float*>(c.out), c.isNormal, d, i);
-  }
+  return c.isDouble
+    ? carryTyped(static_cast<const double*>(c.in), static_cast<double*>(c.out), c.isNormal, d, i)
+    : carryTyped(static_cast<const float*>(c.in), static_cast<float*>(c.out), c.isNormal, d, i);
 }
 
 ProbePreparation prepareProbes(const std::vector<Eigen::Matrix4d>& relative,
@@ -623,7 +632,10 @@ bool storePoint(const PointMap& map, const Eigen::Vector3d& p, Real* out,
   }
   for (int c = 0; c < carriedCount; ++c)
   {
-    carryVector(carried[c], map.linearMinusIdentity, i);
+    if (!carryVector(carried[c], map.linearMinusIdentity, i))
+    {
+      return false;
+    }
   }
   return true;
 }

@@ -200,16 +200,19 @@ struct CarriedVectors
 };
 
 /// Vector i of a carried array transformed by the blended linear part I + d as deformPoints
-/// does: normals by the cofactor, renormalised; other vectors by I + d; a point at rest (d = 0)
-/// keeps its vector bit for bit.
-VTKLCT_EXPORT void carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i);
+/// does: normals by the cofactor (of I + d scaled to entries of at most 1, so that stretches
+/// near the ends of double keep their direction), renormalised; other vectors by I + d; a point
+/// at rest (d = 0) keeps its vector bit for bit. False, with nothing written, where the result
+/// is not finite in double or in the array's type (a vector stretched beyond the range).
+VTKLCT_EXPORT bool carryVector(const CarriedVectors& c, const Eigen::Matrix3d& d, std::int64_t i);
 
 /// Deforms points [begin, end) of `in` (x y z interleaved) into `out`, and the carried arrays.
 /// Thread-safe for disjoint ranges. Stops at the first point that cannot be deformed: NonFinite
 /// (a NaN or Inf slot weight), InvalidArgument (a probe index out of range, or weights the
-/// normalisation cannot divide by), NumericalFailure or OutOfRange (its result, in double or in
-/// Real, is not finite); the outputs of the range are then partly written and the caller
-/// discards them. Weights are checked here, in the one pass over the points, not before.
+/// normalisation cannot divide by), NumericalFailure or OutOfRange (its result, or one of its
+/// carried vectors, in double or in the array's type, is not finite); the outputs of the range
+/// are then partly written and the caller discards them. Weights are checked here, in the one
+/// pass over the points, not before.
 template <typename Real>
 DeformFailure deformPoints(const ProbeBlendSet& set, const WeightSource& source, const Real* in,
   Real* out, const CarriedVectors* carried, int carriedCount, std::int64_t begin, std::int64_t end);

@@ -270,6 +270,17 @@ Eigen::Vector3d pointOf(vtkPointSet* d, vtkIdType i)
   return Eigen::Vector3d(p[0], p[1], p[2]);
 }
 
+
+/// Slot weights (slot k = probe k) taken as they are, without normalisation.
+lct::WeightSource unnormalisedSlots(const std::vector<double>& weights, int slots)
+{
+  lct::WeightSource source;
+  source.kind = lct::WeightSource::Kind::Slots;
+  source.normalization = lct::WeightNormalization::None;
+  source.weights = weights.data();
+  source.slots = slots;
+  return source;
+}
 } // namespace
 
 TEST(ProbeBlend, LogBlendsMatchTheOracleOnRandomProbes)
@@ -437,11 +448,7 @@ TEST(ProbeBlend, DualQuaternionWeightsBeyondTheSquareRootOfDoubleBlendAsTheirRat
       in.insert(in.end(), { p[0], p[1], p[2] });
       weights.insert(weights.end(), { scale, scale });
     }
-    lct::WeightSource source;
-    source.kind = lct::WeightSource::Kind::Slots;
-    source.normalization = lct::WeightNormalization::None;
-    source.weights = weights.data();
-    source.slots = 2;
+    const lct::WeightSource source = unnormalisedSlots(weights, 2);
     for (const int lanes : { 0, 4 })
     {
       lct::ProbeBatchSet batch;
@@ -487,11 +494,7 @@ TEST(ProbeBlend, LogBlendWeightsThatWindTheTurnBeyondDoubleAreRefused)
     {
       raw.insert(raw.end(), { scale, scale });
     }
-    lct::WeightSource source;
-    source.kind = lct::WeightSource::Kind::Slots;
-    source.normalization = lct::WeightNormalization::None;
-    source.weights = raw.data();
-    source.slots = 2;
+    const lct::WeightSource source = unnormalisedSlots(raw, 2);
     lct::ProbeBatchSet batch;
     ASSERT_TRUE(lct::prepareProbeBatch(prepared.set, batch));
     for (const int lanes : { 0, 4 })
@@ -784,6 +787,88 @@ TEST(ProbeBlend, NormalsTransformByTheInverseTranspose)
       const Eigen::Vector3d expected =
         (m.inverse().transpose() * Eigen::Vector3d(&normals[3 * p])).normalized();
       EXPECT_LT((Eigen::Vector3d(&outNormals[3 * p]) - expected).norm(), 1e-12) << modeName(mode);
+    }
+  }
+}
+
+TEST(ProbeBlend, CarriedVectorsOfExtremeStretchesAreExactOrAnError)
+{
+  // A probe scaling by 1e160 at the point itself: the cofactor's entries (1e320) left double,
+  // and normals came out 0 or NaN; they are the unit normals of the cofactor. A vector scaled
+  // beyond double is an error at that point, not Inf in the output. (A contraction keeps the
+  // digits of I + d, d = M - I: 1e-6 is the other case here.)
+  for (const double scale : { 1e160, 1e-6 })
+  {
+    std::vector<Eigen::Matrix4d> relative(1, Eigen::Matrix4d::Identity());
+    relative[0].topLeftCorner<3, 3>() =
+      lct::expSO3(Eigen::Vector3d(0.3, 0, 0)) * Eigen::Vector3d(scale, 2.0 * scale, scale).asDiagonal();
+    const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(1, 2, 3) };
+    for (const lct::BlendMode mode : kModes)
+    {
+      const auto prepared = lct::prepareProbes(relative, centres, {}, mode);
+      if (!prepared.ok())
+      {
+        EXPECT_EQ(mode, lct::BlendMode::MatrixLog); // eigenvalues beyond 10^+-135
+        continue;
+      }
+      const std::vector<double> in = { 1, 2, 3 }, weights = { 1.0 };
+      std::vector<double> out(3, 7.0), normals = { 0.6, 0.0, 0.8 }, outNormals(3, 7.0);
+      const lct::WeightSource src = unnormalisedSlots(weights, 1);
+      lct::PointMap map;
+      ASSERT_EQ(lct::blendAtPoint(prepared.set, weights.data(), nullptr, 1, map), lct::Status::Ok);
+      Eigen::Matrix3d m = map.linearMinusIdentity + Eigen::Matrix3d::Identity();
+      m /= m.cwiseAbs().maxCoeff();
+      const Eigen::Vector3d expected =
+        (m.inverse().transpose() * Eigen::Vector3d(0.6, 0.0, 0.8)).normalized();
+      lct::CarriedVectors normal;
+      normal.in = normals.data();
+      normal.out = outNormals.data();
+      normal.isDouble = true;
+      const lct::DeformFailure f =
+        lct::deformPoints(prepared.set, src, in.data(), out.data(), &normal, 1, 0, 1);
+      ASSERT_TRUE(f.ok()) << scale << " " << modeName(mode);
+      EXPECT_LT((Eigen::Vector3d(outNormals.data()) - expected).norm(), 1e-12)
+        << scale << " " << modeName(mode);
+      lct::ProbeBatchSet batch;
+      const bool batchable = lct::prepareProbeBatch(prepared.set, batch);
+      for (const int lanes : { 0, 4 })
+      {
+        std::fill(outNormals.begin(), outNormals.end(), 7.0);
+        if (batchable)
+        {
+          ASSERT_TRUE(lct::deformBatch(prepared.set, batch, src, in.data(), out.data(), true,
+            &normal, 1, 0, 1, lanes)
+                        .ok());
+          EXPECT_LT((Eigen::Vector3d(outNormals.data()) - expected).norm(), 1e-12)
+            << scale << " " << modeName(mode) << " lanes " << lanes;
+        }
+      }
+      // The same array as plain vectors, stretched by up to 2 scale.
+      std::vector<double> vectors = { 1e300, 0.0, 1e300 }, outVectors(3, 7.0);
+      lct::CarriedVectors vector = normal;
+      vector.isNormal = false;
+      vector.in = vectors.data();
+      vector.out = outVectors.data();
+      std::vector<lct::DeformFailure> failures = { lct::deformPoints(
+        prepared.set, src, in.data(), out.data(), &vector, 1, 0, 1) };
+      for (const int lanes : { 0, 4 })
+      {
+        if (batchable)
+        {
+          failures.push_back(lct::deformBatch(prepared.set, batch, src, in.data(), out.data(),
+            true, &vector, 1, 0, 1, lanes));
+        }
+      }
+      for (const lct::DeformFailure& g : failures)
+      {
+        EXPECT_EQ(g.status, scale > 1.0 ? lct::Status::OutOfRange : lct::Status::Ok)
+          << scale << " " << modeName(mode);
+        EXPECT_EQ(g.point, scale > 1.0 ? 0 : -1);
+      }
+      for (const double x : outVectors)
+      {
+        EXPECT_TRUE(std::isfinite(x)) << scale << " " << modeName(mode);
+      }
     }
   }
 }
