@@ -686,6 +686,8 @@ int vtkProbeDeformerLCT::RequestData(
                            : failure.status == lct::Status::InaccurateResult
                            ? " (its weights wind the blended turn beyond 1e9 radians: "
                              "NormalizationToLinear keeps them from that)"
+                           : failure.status == lct::Status::OutOfRange && !carried.empty()
+                           ? " (its position, or a vector array carried with it)"
                            : ""));
       return fail();
     }

@@ -1272,6 +1272,36 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
     g->SetInputData(far);
     expectRefused(g, "cannot be deformed", 0);
   }
+  // A stretch of 1e160 at the point itself: its normal stays a unit normal, and a vector array
+  // it would stretch beyond double is refused, not written as Inf.
+  {
+    vtkNew<vtkPolyData> one;
+    vtkNew<vtkPoints> onePoint;
+    onePoint->InsertNextPoint(0, 0, 0);
+    one->SetPoints(onePoint);
+    vtkNew<vtkDoubleArray> normal;
+    normal->SetNumberOfComponents(3);
+    normal->InsertNextTuple3(0.6, 0.0, 0.8);
+    one->GetPointData()->SetNormals(normal);
+    vtkNew<vtkTransform> stretch;
+    stretch->Scale(1e160, 2e160, 1e160);
+    vtkNew<vtkProbeDeformerLCT> g;
+    g->AddProbe(stretch);
+    g->SetInputData(one);
+    ASSERT_EQ(g->GetExecutive()->Update(), 1);
+    double n[3];
+    vtkPolyData::SafeDownCast(g->GetOutputDataObject(0))->GetPointData()->GetNormals()->GetTuple(
+      0, n);
+    // M^-T (0.6, 0, 0.8) is parallel to it (the cofactor's entries are 2e320 and 1e320).
+    EXPECT_NEAR(n[0], 0.6, 1e-15);
+    EXPECT_EQ(n[1], 0.0);
+    EXPECT_NEAR(n[2], 0.8, 1e-15);
+    vtkNew<vtkDoubleArray> vectors;
+    vectors->SetNumberOfComponents(3);
+    vectors->InsertNextTuple3(1e300, 0.0, 0.0);
+    one->GetPointData()->SetVectors(vectors);
+    expectRefused(g, "a vector array carried with it", 1);
+  }
 
   // DualQuaternion with stretched probes and unnormalised weights summing to 0: no blend of the
   // stretches (sum w S / sum w); refused, the last output kept.
