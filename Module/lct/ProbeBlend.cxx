@@ -335,8 +335,8 @@ bool carryTyped(const Real* in, Real* out, bool isNormal, const Eigen::Matrix3d&
   else if (isNormal)
   {
     // cof(M) = det(M) M^-T: rows r1 x r2, r2 x r0, r0 x r1 of M = I + D, of M scaled to
-    // entries of at most 1 (cof(s M) = s^2 cof(M) points the same way; the entries of a
-    // stretch of 1e160 or 1e-160 would square out of double and leave a normal of 0 or NaN).
+    // entries of at most 1 (cof(s M) = s^2 cof(M) points the same way; the cofactor of a
+    // stretch of 1e160 would leave double and the normal come out 0 or NaN).
     Eigen::Matrix3d m = d;
     m.diagonal().array() += 1.0;
     const double largest = m.cwiseAbs().maxCoeff();
