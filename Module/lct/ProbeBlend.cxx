@@ -519,21 +519,15 @@ void distanceWeights(
       w[i] = squared ? x * x : unit ? x : std::pow(x, source.exponent);
     }
   }
-  if (onCentre)
-  {
-    // The limit of r / d^p as the point reaches a centre: that probe alone (ties share).
-    for (int i = 0; i < n; ++i)
-    {
-      w[i] = std::isinf(w[i]) ? 1.0 : 0.0;
-    }
-    return;
-  }
   if (inverse && source.normalization == WeightNormalization::Linear &&
-    (beyondSquares || largest < kSmallestDistanceWeight))
+    (onCentre || beyondSquares || largest < kSmallestDistanceWeight ||
+      largest > kLargestDistanceWeight))
   {
-    // Far from every centre r / d^p underflows (or d^2 overflows): the weights would be 0, and
-    // the point would stay put. Linear normalisation needs only their ratios, so they are taken
-    // relative to the nearest centre, r (d_min / d)^p, with d measured without squaring.
+    // Linear normalisation needs only the weights' ratios, so where r / d^p leaves the double
+    // range they are taken relative to the nearest centre, r (d_min / d)^p, with d measured
+    // without squaring: far from every centre they would underflow to 0 (or d^2 overflow) and
+    // the point stay put; next to a centre two of them would sum to infinity; on a centre the
+    // limit is that probe alone, or centres that coincide there shared as r_k / sum r.
     double nearest = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n; ++i)
     {
@@ -542,9 +536,18 @@ void distanceWeights(
     }
     for (int i = 0; i < n; ++i)
     {
-      const double ratio = nearest / w[i];
+      const double ratio = nearest == 0.0 ? (w[i] == 0.0 ? 1.0 : 0.0) : nearest / w[i];
       w[i] = source.radii[i] *
         (squared ? ratio * ratio : unit ? ratio : std::pow(ratio, source.exponent));
+    }
+    return;
+  }
+  if (onCentre)
+  {
+    // The limit of r / d^p as the point reaches a centre: that probe alone (ties share).
+    for (int i = 0; i < n; ++i)
+    {
+      w[i] = std::isinf(w[i]) ? 1.0 : 0.0;
     }
   }
 }

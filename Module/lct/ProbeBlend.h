@@ -170,16 +170,20 @@ struct DeformFailure
   bool ok() const noexcept { return status == Status::Ok; }
 };
 
-/// The smallest largest raw InverseDistance weight of a point taken as computed; below it
-/// (a point about 1e145 times a probe radius from every centre, with exponent 2) distanceWeights
-/// takes them relative to the nearest centre.
+/// The range of a point's largest raw InverseDistance weight taken as computed; beyond it (a
+/// point about 1e145 times a probe radius from every centre, or within 1e-145 of one, with
+/// exponent 2) distanceWeights takes them relative to the nearest centre under Linear
+/// normalisation.
 constexpr double kSmallestDistanceWeight = 0x1p-960;
+constexpr double kLargestDistanceWeight = 0x1p960;
 
 /// The raw InverseDistance or Cutoff weights of point p over every probe, as deformPoints takes
-/// them: r_k / d_k^p (a point on a centre takes that probe alone, ties share) or
-/// ((r_k - d_k) / r_k)^p within r_k. Under Linear normalisation, InverseDistance weights that
-/// would underflow (or whose d^2 overflows) are r_k (d_min / d_k)^p instead: the same
-/// normalised weights, where the raw ones would all be 0 and leave the point at rest.
+/// them: r_k / d_k^p or ((r_k - d_k) / r_k)^p within r_k. Under Linear normalisation,
+/// InverseDistance weights out of that range are r_k (d_min / d_k)^p instead: the same
+/// normalised weights where the raw ones would all underflow to 0 (the point would stay put)
+/// or sum to infinity, and their limit on a centre: that probe alone, or the probes whose
+/// centres coincide there in proportion to their radii. Otherwise a point on a centre takes
+/// that probe alone (weight 1; ties share equally).
 VTKLCT_EXPORT void distanceWeights(
   const ProbeBlendSet& set, const WeightSource& source, const Eigen::Vector3d& p, double* w);
 

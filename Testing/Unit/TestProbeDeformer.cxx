@@ -270,7 +270,6 @@ Eigen::Vector3d pointOf(vtkPointSet* d, vtkIdType i)
   return Eigen::Vector3d(p[0], p[1], p[2]);
 }
 
-
 /// Slot weights (slot k = probe k) taken as they are, without normalisation.
 lct::WeightSource unnormalisedSlots(const std::vector<double>& weights, int slots)
 {
@@ -281,6 +280,42 @@ lct::WeightSource unnormalisedSlots(const std::vector<double>& weights, int slot
   source.slots = slots;
   return source;
 }
+
+/// InverseDistance weights r_k / d_k^exponent, Linear normalisation.
+lct::WeightSource inverseDistance(const double* radii, double exponent)
+{
+  lct::WeightSource source;
+  source.kind = lct::WeightSource::Kind::InverseDistance;
+  source.radii = radii;
+  source.exponent = exponent;
+  return source;
+}
+
+/// Deforms the double points `in` point by point (lct::deformPoints) and, where the set runs in
+/// lanes, by lct::deformBatch on the CPU's lanes and on 4, each into `out` (first filled with
+/// 7) and each checked by check(path name); every run must succeed.
+template <typename Check>
+void deformEveryWay(const lct::ProbeBlendSet& set, const lct::WeightSource& source,
+  const std::vector<double>& in, std::vector<double>& out, Check&& check)
+{
+  const std::int64_t count = static_cast<std::int64_t>(in.size() / 3);
+  out.assign(in.size(), 7.0);
+  ASSERT_TRUE(lct::deformPoints(set, source, in.data(), out.data(), nullptr, 0, 0, count).ok());
+  check("point by point");
+  lct::ProbeBatchSet batch;
+  if (lct::prepareProbeBatch(set, batch))
+  {
+    for (const int lanes : { 0, 4 })
+    {
+      std::fill(out.begin(), out.end(), 7.0);
+      ASSERT_TRUE(lct::deformBatch(
+        set, batch, source, in.data(), out.data(), true, nullptr, 0, 0, count, lanes)
+                    .ok());
+      check(lanes == 4 ? "4 lanes" : "lanes");
+    }
+  }
+}
+
 } // namespace
 
 TEST(ProbeBlend, LogBlendsMatchTheOracleOnRandomProbes)
@@ -458,8 +493,8 @@ TEST(ProbeBlend, DualQuaternionWeightsBeyondTheSquareRootOfDoubleBlendAsTheirRat
       EXPECT_TRUE(f.ok()) << scale;
       for (int i = 0; i < 9; ++i)
       {
-        EXPECT_LE((Eigen::Vector3d(out[3 * i], out[3 * i + 1], out[3 * i + 2]) - expected).norm(),
-          1e-12)
+        EXPECT_LE(
+          (Eigen::Vector3d(out[3 * i], out[3 * i + 1], out[3 * i + 2]) - expected).norm(), 1e-12)
           << scale << " lanes " << lanes << " point " << i;
       }
     }
@@ -482,9 +517,9 @@ TEST(ProbeBlend, LogBlendWeightsThatWindTheTurnBeyondDoubleAreRefused)
     Eigen::Vector3d(1, 0, 0) };
   const auto prepared = lct::prepareProbes(relative, centres, {}, lct::BlendMode::Polar);
   ASSERT_TRUE(prepared.ok());
-  for (const auto& [scale, expected] : { std::pair{ 1e8, lct::Status::Ok },
-         std::pair{ 1e100, lct::Status::InaccurateResult },
-         std::pair{ 1e300, lct::Status::OutOfRange } })
+  for (const auto& [scale, expected] :
+    { std::pair{ 1e8, lct::Status::Ok }, std::pair{ 1e100, lct::Status::InaccurateResult },
+      std::pair{ 1e300, lct::Status::OutOfRange } })
   {
     const double weights[] = { scale, scale };
     lct::PointMap map;
@@ -515,8 +550,8 @@ TEST(ProbeBlend, LogBlendWeightsThatWindTheTurnBeyondDoubleAreRefused)
   // MatrixLog (point by point only): the same turns.
   const auto matrixLog = lct::prepareProbes(relative, centres, {}, lct::BlendMode::MatrixLog);
   ASSERT_TRUE(matrixLog.ok());
-  for (const auto& [scale, ok] : { std::pair{ 1e8, true }, std::pair{ 1e100, false },
-         std::pair{ 1e300, false } })
+  for (const auto& [scale, ok] :
+    { std::pair{ 1e8, true }, std::pair{ 1e100, false }, std::pair{ 1e300, false } })
   {
     const double weights[] = { scale, scale };
     lct::PointMap map;
@@ -551,15 +586,12 @@ TEST(ProbeBlend, InverseDistanceWeightsOfFarPointsAreTheirLimitNotZero)
       for (const double exponent : { 1.0, 2.0, 1.5 })
       {
         const Eigen::Vector3d p(far, 0.5 * far, -0.25 * far), expected = limit.apply(p);
-        std::vector<double> in, out(27, 7.0);
+        std::vector<double> in, out;
         for (int i = 0; i < 9; ++i)
         {
           in.insert(in.end(), { p[0], p[1], p[2] });
         }
-        lct::WeightSource source;
-        source.kind = lct::WeightSource::Kind::InverseDistance;
-        source.radii = radii;
-        source.exponent = exponent;
+        const lct::WeightSource source = inverseDistance(radii, exponent);
         const auto check = [&](const char* path) {
           for (int i = 0; i < 9; ++i)
           {
@@ -570,22 +602,60 @@ TEST(ProbeBlend, InverseDistanceWeightsOfFarPointsAreTheirLimitNotZero)
               << exponent << " point " << i;
           }
         };
-        ASSERT_TRUE(lct::deformPoints(prepared.set, source, in.data(), out.data(), nullptr, 0, 0, 9)
-                      .ok());
-        check("point by point");
-        lct::ProbeBatchSet batch;
-        if (lct::prepareProbeBatch(prepared.set, batch))
-        {
-          for (const int lanes : { 0, 4 })
-          {
-            std::fill(out.begin(), out.end(), 7.0);
-            ASSERT_TRUE(lct::deformBatch(prepared.set, batch, source, in.data(), out.data(), true,
-              nullptr, 0, 0, 9, lanes)
-                          .ok());
-            check(lanes == 4 ? "4 lanes" : "lanes");
-          }
-        }
+        deformEveryWay(prepared.set, source, in, out, check);
       }
+    }
+  }
+}
+
+TEST(ProbeBlend, InverseDistanceWeightsNextToAndOnCoincidentCentresShareByRadius)
+{
+  // Two probes whose centres coincide at the origin, radii 1 and 3, a third at (1, 0, 0):
+  // near the origin r_k / d^p tends to 1 : 3 : 0. At d = 1e-154 (exponent 2) the raw weights
+  // 1e308 and 3e308 overflowed (the second to Inf, taken as "on the centre": probe 1 alone),
+  // and at d = 0 both were Inf and shared equally: a jump from 1/4, 3/4 to 0, 1 and 1/2, 1/2.
+  // Under Linear normalisation every such point now blends 1/4, 3/4, by the lanes and point by
+  // point; a single centre still takes its probe alone.
+  std::vector<Eigen::Matrix4d> relative(3, Eigen::Matrix4d::Identity());
+  relative[0].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0, 0, 1.0));
+  relative[0].topRightCorner<3, 1>() = Eigen::Vector3d(1, 0, 0); // moves the points near 0
+  relative[1].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0.5, 0, 0));
+  relative[1].topRightCorner<3, 1>() = Eigen::Vector3d(0, 2, 0);
+  relative[2].topRightCorner<3, 1>() = Eigen::Vector3d(0, 5, 0);
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 0),
+    Eigen::Vector3d(1, 0, 0) };
+  const double radii[] = { 1.0, 3.0, 1.0 };
+  for (const lct::BlendMode mode : { lct::BlendMode::Polar, lct::BlendMode::Linear,
+         lct::BlendMode::DualQuaternion, lct::BlendMode::MatrixLog })
+  {
+    const auto prepared = lct::prepareProbes(relative, centres, {}, mode);
+    ASSERT_TRUE(prepared.ok());
+    const double shared[] = { 0.25, 0.75, 0.0 }, alone[] = { 0.0, 0.0, 1.0 };
+    lct::PointMap sharedMap, aloneMap;
+    ASSERT_EQ(lct::blendAtPoint(prepared.set, shared, nullptr, 3, sharedMap), lct::Status::Ok);
+    ASSERT_EQ(lct::blendAtPoint(prepared.set, alone, nullptr, 3, aloneMap), lct::Status::Ok);
+    for (const double exponent : { 1.0, 2.0, 1.5 })
+    {
+      // Points at the origin, 1e-154 and 1e-300 from it, and on the third centre.
+      const Eigen::Vector3d points[] = { Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1e-154, 0),
+        Eigen::Vector3d(0, 0, 1e-300), Eigen::Vector3d(1, 0, 0) };
+      std::vector<double> in, out;
+      for (const Eigen::Vector3d& p : points)
+      {
+        in.insert(in.end(), { p[0], p[1], p[2] });
+      }
+      const lct::WeightSource source = inverseDistance(radii, exponent);
+      const auto check = [&](const char* path) {
+        for (int i = 0; i < 4; ++i)
+        {
+          const Eigen::Vector3d got(out[3 * i], out[3 * i + 1], out[3 * i + 2]);
+          const Eigen::Vector3d expected = (i == 3 ? aloneMap : sharedMap).apply(points[i]);
+          EXPECT_LE((got - expected).norm(), 1e-12)
+            << path << " mode " << static_cast<int>(mode) << " exponent " << exponent << " point "
+            << i << ": " << got.transpose() << " expected " << expected.transpose();
+        }
+      };
+      deformEveryWay(prepared.set, source, in, out, check);
     }
   }
 }
@@ -800,8 +870,8 @@ TEST(ProbeBlend, CarriedVectorsOfExtremeStretchesAreExactOrAnError)
   for (const double scale : { 1e160, 1e-6 })
   {
     std::vector<Eigen::Matrix4d> relative(1, Eigen::Matrix4d::Identity());
-    relative[0].topLeftCorner<3, 3>() =
-      lct::expSO3(Eigen::Vector3d(0.3, 0, 0)) * Eigen::Vector3d(scale, 2.0 * scale, scale).asDiagonal();
+    relative[0].topLeftCorner<3, 3>() = lct::expSO3(Eigen::Vector3d(0.3, 0, 0)) *
+      Eigen::Vector3d(scale, 2.0 * scale, scale).asDiagonal();
     const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(1, 2, 3) };
     for (const lct::BlendMode mode : kModes)
     {
@@ -836,8 +906,8 @@ TEST(ProbeBlend, CarriedVectorsOfExtremeStretchesAreExactOrAnError)
         std::fill(outNormals.begin(), outNormals.end(), 7.0);
         if (batchable)
         {
-          ASSERT_TRUE(lct::deformBatch(prepared.set, batch, src, in.data(), out.data(), true,
-            &normal, 1, 0, 1, lanes)
+          ASSERT_TRUE(lct::deformBatch(
+            prepared.set, batch, src, in.data(), out.data(), true, &normal, 1, 0, 1, lanes)
                         .ok());
           EXPECT_LT((Eigen::Vector3d(outNormals.data()) - expected).norm(), 1e-12)
             << scale << " " << modeName(mode) << " lanes " << lanes;
@@ -855,8 +925,8 @@ TEST(ProbeBlend, CarriedVectorsOfExtremeStretchesAreExactOrAnError)
       {
         if (batchable)
         {
-          failures.push_back(lct::deformBatch(prepared.set, batch, src, in.data(), out.data(),
-            true, &vector, 1, 0, 1, lanes));
+          failures.push_back(lct::deformBatch(
+            prepared.set, batch, src, in.data(), out.data(), true, &vector, 1, 0, 1, lanes));
         }
       }
       for (const lct::DeformFailure& g : failures)
@@ -1290,8 +1360,10 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
     g->SetInputData(one);
     ASSERT_EQ(g->GetExecutive()->Update(), 1);
     double n[3];
-    vtkPolyData::SafeDownCast(g->GetOutputDataObject(0))->GetPointData()->GetNormals()->GetTuple(
-      0, n);
+    vtkPolyData::SafeDownCast(g->GetOutputDataObject(0))
+      ->GetPointData()
+      ->GetNormals()
+      ->GetTuple(0, n);
     // M^-T (0.6, 0, 0.8) is parallel to it (the cofactor's entries are 2e320 and 1e320).
     EXPECT_NEAR(n[0], 0.6, 1e-15);
     EXPECT_EQ(n[1], 0.0);
