@@ -101,7 +101,7 @@ double ArcLengthTime<Dim>::curveTime(double t, PositionAt&& positionAt) const
     {
       return linear;
     }
-    const double f = (p - this->P[j]).norm() - d;
+    const double f = (p - this->P[j]).stableNorm() - d; // no square out of range
     if (std::abs(f) <= 1e-12 * this->Chord[j])
     {
       break;

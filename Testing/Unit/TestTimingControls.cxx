@@ -413,6 +413,33 @@ TEST(TimingControls, TransformTimingBadInputIsRefusedAndChangesNothing)
   EXPECT_EQ(arrivals->GetNumberOfTuples(), 0);
 }
 
+TEST(TimingControls, ConstantSpeedOfHugeAndTinyPathsIsTheSameAsOfAUnitOne)
+{
+  // Constant speed depends on the path's shape, not its size. From ~1.3e154 on, the distance in
+  // the query's solve squared out of double (Inf): it gave up silently and the point ran up to
+  // 16 % of the path off even, with every call returning 1.
+  const auto normalisedPath = [](double size) {
+    vtkNew<vtkTransformInterpolatorLCT> path;
+    addTranslations(path, { 0, 1, 2 }, { 0, size, -size });
+    path->ConstantSpeedOn();
+    std::vector<double> x;
+    for (int i = 0; i <= 16; ++i)
+    {
+      x.push_back(xAt(path, i / 8.0) / size);
+    }
+    return x;
+  };
+  const std::vector<double> unit = normalisedPath(1.0);
+  for (const double size : { 1e-300, 1e-160, 1e155, 1e160, 1e200 })
+  {
+    const std::vector<double> scaled = normalisedPath(size);
+    for (size_t i = 0; i < unit.size(); ++i)
+    {
+      EXPECT_NEAR(scaled[i], unit[i], 1e-9) << "size " << size << " at t = " << i / 8.0;
+    }
+  }
+}
+
 TEST(TimingControls, ConstantSpeedOfAnOverflowingPathIsAnErrorNotInf)
 {
   vtkNew<vtkTransformInterpolatorLCT> path;
