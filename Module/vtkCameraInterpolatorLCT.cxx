@@ -1,5 +1,7 @@
 #include "vtkCameraInterpolatorLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/CameraKey.h"
 #include "lct/Curves.h"
 #include "lct/Format.h"
@@ -502,8 +504,13 @@ int vtkCameraInterpolatorLCT::RemoveCamera(double t)
 //------------------------------------------------------------------------------
 int vtkCameraInterpolatorLCT::SetInterpolationType(int type)
 {
-  type = std::clamp(type, static_cast<int>(INTERPOLATION_TYPE_LINEAR),
-    static_cast<int>(INTERPOLATION_TYPE_SUBDIVISION));
+  if (type < INTERPOLATION_TYPE_LINEAR || type > INTERPOLATION_TYPE_SUBDIVISION)
+  {
+    vtkErrorMacro(<< "SetInterpolationType(" << type << "): outside [" << INTERPOLATION_TYPE_LINEAR
+                  << ", " << INTERPOLATION_TYPE_SUBDIVISION << "]; InterpolationType stays "
+                  << this->InterpolationType << ".");
+    return 0;
+  }
   if (type == this->InterpolationType)
   {
     return 1;
@@ -716,4 +723,12 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "Time range: [" << this->GetMinimumT() << ", " << this->GetMaximumT() << "]\n";
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraInterpolatorLCT::SetConstantSpeedMeasure(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "ConstantSpeedMeasure", this->ConstantSpeedMeasure, value,
+    static_cast<int>(CONSTANT_SPEED_EYE_AND_FOCAL_POINT),
+    static_cast<int>(CONSTANT_SPEED_FOCAL_POINT));
 }

@@ -121,8 +121,8 @@ public:
   ///@{
   /**
    * The curve scheme (see vtkTransformInterpolatorLCT). Default: Spline, as vtkCameraInterpolator.
-   * A value out of range is clamped. Returns 1, or 0 with an error (type unchanged) when, with
-   * the CameraMatrix method, a curve point of the new type would combine a camera-matrix
+   * Returns 1, or 0 with an error (type unchanged) for a value out of range or when, with the
+   * CameraMatrix method, a curve point of the new type would combine a camera-matrix
    * logarithm that does not exist.
    */
   int SetInterpolationType(int type);
@@ -260,8 +260,9 @@ public:
   vtkSetMacro(ConstantSpeed, vtkTypeBool);
   vtkGetMacro(ConstantSpeed, vtkTypeBool);
   vtkBooleanMacro(ConstantSpeed, vtkTypeBool);
-  vtkSetClampMacro(
-    ConstantSpeedMeasure, int, CONSTANT_SPEED_EYE_AND_FOCAL_POINT, CONSTANT_SPEED_FOCAL_POINT);
+  virtual int SetConstantSpeedMeasure(int value);
+  int GetConstantSpeedMeasureMinValue() { return CONSTANT_SPEED_EYE_AND_FOCAL_POINT; }
+  int GetConstantSpeedMeasureMaxValue() { return CONSTANT_SPEED_FOCAL_POINT; }
   vtkGetMacro(ConstantSpeedMeasure, int);
   ///@}
 

@@ -1,5 +1,7 @@
 #include "vtkCameraPathMetric.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/PathMetric.h"
 #include "lct/SegmentPathMetric.h"
 
@@ -386,4 +388,25 @@ void vtkCameraPathMetric::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LargestKeyMissCameraSpace: " << this->LargestKeyMissCameraSpace << " %\n";
   os << indent << "LargestKeyMissScreenSpace: " << this->LargestKeyMissScreenSpace << " %\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraPathMetric::SetAspect(double value)
+{
+  return vtkLCTCheckedSet::Set(
+    this, "Aspect", this->Aspect, value, static_cast<double>(1e-6), static_cast<double>(1e6));
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraPathMetric::SetNumberOfSamples(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "NumberOfSamples", this->NumberOfSamples, value,
+    static_cast<int>(2), static_cast<int>(100000));
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraPathMetric::SetSamplesPerSegment(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "SamplesPerSegment", this->SamplesPerSegment, value,
+    static_cast<int>(2), static_cast<int>(1000));
 }

@@ -71,7 +71,9 @@ public:
   /**
    * Aspect ratio (width / height) of the viewport for the screen-space measure. Default 1.
    */
-  vtkSetClampMacro(Aspect, double, 1e-6, 1e6);
+  virtual int SetAspect(double value);
+  double GetAspectMinValue() { return 1e-6; }
+  double GetAspectMaxValue() { return 1e6; }
   vtkGetMacro(Aspect, double);
   ///@}
 
@@ -80,7 +82,9 @@ public:
    * Number of samples EvaluateInterpolator takes, both ends included. Default 11, at most
    * 100000 (the samples' matrices are kept: 256 bytes each).
    */
-  vtkSetClampMacro(NumberOfSamples, int, 2, 100000);
+  virtual int SetNumberOfSamples(int value);
+  int GetNumberOfSamplesMinValue() { return 2; }
+  int GetNumberOfSamplesMaxValue() { return 100000; }
   vtkGetMacro(NumberOfSamples, int);
   ///@}
 
@@ -129,7 +133,9 @@ public:
    * renders; lower it only for paths with very many keys (the samples' matrices are kept, 256
    * bytes each, at most 2e6 in all).
    */
-  vtkSetClampMacro(SamplesPerSegment, int, 2, 1000);
+  virtual int SetSamplesPerSegment(int value);
+  int GetSamplesPerSegmentMinValue() { return 2; }
+  int GetSamplesPerSegmentMaxValue() { return 1000; }
   vtkGetMacro(SamplesPerSegment, int);
   ///@}
 

@@ -1,5 +1,7 @@
 #include "vtkInterpolatorCueLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "vtkCamera.h"
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkMatrix4x4.h"
@@ -164,4 +166,11 @@ void vtkInterpolatorCueLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "KeyTimeMapping: " << (this->KeyTimeMapping == KEY_TIME_MAPPING_RANGE ? "Range" : "CueTime")
      << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkInterpolatorCueLCT::SetKeyTimeMapping(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "KeyTimeMapping", this->KeyTimeMapping, value,
+    static_cast<int>(KEY_TIME_MAPPING_RANGE), static_cast<int>(KEY_TIME_MAPPING_CUE_TIME));
 }

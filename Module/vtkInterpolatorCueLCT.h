@@ -78,7 +78,9 @@ public:
   /**
    * How cue time maps to key time (see the class description). Default: range.
    */
-  vtkSetClampMacro(KeyTimeMapping, int, KEY_TIME_MAPPING_RANGE, KEY_TIME_MAPPING_CUE_TIME);
+  virtual int SetKeyTimeMapping(int value);
+  int GetKeyTimeMappingMinValue() { return KEY_TIME_MAPPING_RANGE; }
+  int GetKeyTimeMappingMaxValue() { return KEY_TIME_MAPPING_CUE_TIME; }
   vtkGetMacro(KeyTimeMapping, int);
   void SetKeyTimeMappingToRange() { this->SetKeyTimeMapping(KEY_TIME_MAPPING_RANGE); }
   void SetKeyTimeMappingToCueTime() { this->SetKeyTimeMapping(KEY_TIME_MAPPING_CUE_TIME); }

@@ -1,5 +1,7 @@
 #include "vtkProbeDeformerLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/Affine.h"
 #include "lct/Format.h"
 #include "lct/PolarParametrisation.h"
@@ -749,4 +751,32 @@ void vtkProbeDeformerLCT::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "VectorArrayName: " << name << "\n";
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkProbeDeformerLCT::SetBlendMode(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "BlendMode", this->BlendMode, value, static_cast<int>(POLAR),
+    static_cast<int>(DUAL_QUATERNION));
+}
+
+//------------------------------------------------------------------------------
+int vtkProbeDeformerLCT::SetWeightMode(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "WeightMode", this->WeightMode, value,
+    static_cast<int>(INVERSE_DISTANCE), static_cast<int>(POINT_DATA));
+}
+
+//------------------------------------------------------------------------------
+int vtkProbeDeformerLCT::SetNormalization(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "Normalization", this->Normalization, value,
+    static_cast<int>(NORMALIZE_LINEAR), static_cast<int>(NORMALIZE_NONE));
+}
+
+//------------------------------------------------------------------------------
+int vtkProbeDeformerLCT::SetSerialThreshold(vtkIdType value)
+{
+  return vtkLCTCheckedSet::Set(this, "SerialThreshold", this->SerialThreshold, value,
+    static_cast<vtkIdType>(0), static_cast<vtkIdType>(VTK_ID_MAX));
 }

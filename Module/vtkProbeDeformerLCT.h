@@ -137,7 +137,9 @@ public:
   /**
    * The blend: POLAR (default), MATRIX_LOG, LINEAR or DUAL_QUATERNION.
    */
-  vtkSetClampMacro(BlendMode, int, POLAR, DUAL_QUATERNION);
+  virtual int SetBlendMode(int value);
+  int GetBlendModeMinValue() { return POLAR; }
+  int GetBlendModeMaxValue() { return DUAL_QUATERNION; }
   vtkGetMacro(BlendMode, int);
   void SetBlendModeToPolar() { this->SetBlendMode(POLAR); }
   void SetBlendModeToMatrixLog() { this->SetBlendMode(MATRIX_LOG); }
@@ -150,7 +152,9 @@ public:
   /**
    * Where the weights come from: INVERSE_DISTANCE (default), CUTOFF or POINT_DATA.
    */
-  vtkSetClampMacro(WeightMode, int, INVERSE_DISTANCE, POINT_DATA);
+  virtual int SetWeightMode(int value);
+  int GetWeightModeMinValue() { return INVERSE_DISTANCE; }
+  int GetWeightModeMaxValue() { return POINT_DATA; }
   vtkGetMacro(WeightMode, int);
   void SetWeightModeToInverseDistance() { this->SetWeightMode(INVERSE_DISTANCE); }
   void SetWeightModeToCutoff() { this->SetWeightMode(CUTOFF); }
@@ -171,7 +175,9 @@ public:
    * Per-point normalisation of the weights: NORMALIZE_LINEAR (default), NORMALIZE_SOFTMAX or
    * NORMALIZE_NONE.
    */
-  vtkSetClampMacro(Normalization, int, NORMALIZE_LINEAR, NORMALIZE_NONE);
+  virtual int SetNormalization(int value);
+  int GetNormalizationMinValue() { return NORMALIZE_LINEAR; }
+  int GetNormalizationMaxValue() { return NORMALIZE_NONE; }
   vtkGetMacro(Normalization, int);
   void SetNormalizationToLinear() { this->SetNormalization(NORMALIZE_LINEAR); }
   void SetNormalizationToSoftmax() { this->SetNormalization(NORMALIZE_SOFTMAX); }
@@ -224,7 +230,9 @@ public:
   /**
    * Below this many points the filter runs serially (default 20000).
    */
-  vtkSetClampMacro(SerialThreshold, vtkIdType, 0, VTK_ID_MAX);
+  virtual int SetSerialThreshold(vtkIdType value);
+  vtkIdType GetSerialThresholdMinValue() { return 0; }
+  vtkIdType GetSerialThresholdMaxValue() { return VTK_ID_MAX; }
   vtkGetMacro(SerialThreshold, vtkIdType);
   ///@}
 

@@ -1,5 +1,7 @@
 #include "vtkShapeBlenderLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/Format.h"
 #include "lct/ShapeBlend.h"
 #include "lct/Status.h"
@@ -452,4 +454,11 @@ void vtkShapeBlenderLCT::PrintSelf(ostream& os, vtkIndent indent)
               " triangles, " + std::to_string(this->Internal->Blender.numberOfPieces()) + " pieces"
                                    : std::string("none"))
      << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkShapeBlenderLCT::SetSerialThreshold(vtkIdType value)
+{
+  return vtkLCTCheckedSet::Set(this, "SerialThreshold", this->SerialThreshold, value,
+    static_cast<vtkIdType>(0), static_cast<vtkIdType>(VTK_ID_MAX));
 }

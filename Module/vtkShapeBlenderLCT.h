@@ -107,7 +107,9 @@ public:
    * Below this many faces the per-face work runs serially (default 5000); above it vtkSMPTools
    * splits it. The result does not depend on it.
    */
-  vtkSetClampMacro(SerialThreshold, vtkIdType, 0, VTK_ID_MAX);
+  virtual int SetSerialThreshold(vtkIdType value);
+  vtkIdType GetSerialThresholdMinValue() { return 0; }
+  vtkIdType GetSerialThresholdMaxValue() { return VTK_ID_MAX; }
   vtkGetMacro(SerialThreshold, vtkIdType);
   ///@}
 

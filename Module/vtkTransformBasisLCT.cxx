@@ -1,5 +1,7 @@
 #include "vtkTransformBasisLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/Format.h"
 #include "lct/LogBasis.h"
 #include "lct/Parametrisation.h"
@@ -543,4 +545,11 @@ void vtkTransformBasisLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Residual: " << this->Residual << "\n";
   os << indent << "CoefficientTolerance: " << this->CoefficientTolerance << "\n";
   os << indent << "CoefficientErrorBound: " << this->CoefficientErrorBound << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformBasisLCT::SetMaximumRank(int value)
+{
+  return vtkLCTCheckedSet::Set(
+    this, "MaximumRank", this->MaximumRank, value, static_cast<int>(0), static_cast<int>(12));
 }

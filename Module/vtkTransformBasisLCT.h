@@ -117,7 +117,9 @@ public:
    * For SetBasisFromExamples: keep at most this many directions (0, the default: all above
    * the rank tolerance).
    */
-  vtkSetClampMacro(MaximumRank, int, 0, 12);
+  virtual int SetMaximumRank(int value);
+  int GetMaximumRankMinValue() { return 0; }
+  int GetMaximumRankMaxValue() { return 12; }
   vtkGetMacro(MaximumRank, int);
   ///@}
 

@@ -790,8 +790,13 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
 //------------------------------------------------------------------------------
 int vtkTransformInterpolatorLCT::SetInterpolationType(int type)
 {
-  type = std::clamp(
-    type, static_cast<int>(INTERPOLATION_TYPE_LINEAR), static_cast<int>(INTERPOLATION_TYPE_BEZIER));
+  if (type < INTERPOLATION_TYPE_LINEAR || type > INTERPOLATION_TYPE_BEZIER)
+  {
+    vtkErrorMacro(<< "SetInterpolationType(" << type << "): outside [" << INTERPOLATION_TYPE_LINEAR
+                  << ", " << INTERPOLATION_TYPE_BEZIER << "]; InterpolationType stays "
+                  << this->InterpolationType << ".");
+    return 0;
+  }
   if (type == this->InterpolationType)
   {
     return 1;

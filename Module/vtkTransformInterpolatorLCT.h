@@ -153,9 +153,9 @@ public:
 
   ///@{
   /**
-   * The curve scheme. Default: Spline, as vtkTransformInterpolator. A value out of range is
-   * clamped (as vtkSetClampMacro does). Returns 1, or 0 with an error naming the keys (and the
-   * type unchanged) when the keys do not have every logarithm a curve point of the new type
+   * The curve scheme. Default: Spline, as vtkTransformInterpolator. Returns 1, or 0 with an
+   * error (the type unchanged) for a value out of range (vtkSetClampMacro would clamp it
+   * silently) or when the keys do not have every logarithm a curve point of the new type
    * combines (a wider stencil reaches keys farther apart).
    */
   int SetInterpolationType(int type);

@@ -1,5 +1,7 @@
 #include "vtkTransformSequencePCA.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/Affine.h"
 
 #include "lct/Format.h"
@@ -476,4 +478,18 @@ void vtkTransformSequencePCA::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RootChannel: " << this->RootChannel << "\n";
   os << indent << "MaximumNumberOfComponents: " << this->MaximumNumberOfComponents << "\n";
   os << indent << "NumberOfComponents: " << this->GetNumberOfComponents() << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformSequencePCA::SetParametrisation(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "Parametrisation", this->Parametrisation, value,
+    static_cast<int>(POLAR), static_cast<int>(MATRIX_LOG));
+}
+
+//------------------------------------------------------------------------------
+int vtkTransformSequencePCA::SetMaximumNumberOfComponents(int value)
+{
+  return vtkLCTCheckedSet::Set(this, "MaximumNumberOfComponents", this->MaximumNumberOfComponents,
+    value, static_cast<int>(0), static_cast<int>(VTK_INT_MAX));
 }

@@ -58,7 +58,9 @@ public:
   /**
    * The parametrisation of the logs: POLAR (default) or MATRIX_LOG.
    */
-  vtkSetClampMacro(Parametrisation, int, POLAR, MATRIX_LOG);
+  virtual int SetParametrisation(int value);
+  int GetParametrisationMinValue() { return POLAR; }
+  int GetParametrisationMaxValue() { return MATRIX_LOG; }
   vtkGetMacro(Parametrisation, int);
   void SetParametrisationToPolar() { this->SetParametrisation(POLAR); }
   void SetParametrisationToMatrixLog() { this->SetParametrisation(MATRIX_LOG); }
@@ -103,7 +105,9 @@ public:
    * Keep at most this many components (0, the default: every component with a non-zero
    * singular value).
    */
-  vtkSetClampMacro(MaximumNumberOfComponents, int, 0, VTK_INT_MAX);
+  virtual int SetMaximumNumberOfComponents(int value);
+  int GetMaximumNumberOfComponentsMinValue() { return 0; }
+  int GetMaximumNumberOfComponentsMaxValue() { return VTK_INT_MAX; }
   vtkGetMacro(MaximumNumberOfComponents, int);
   ///@}
 

@@ -275,14 +275,28 @@ private:
           this->Basis->SetRankTolerance(this->In.Double()), errors, before, "SetRankTolerance");
         break;
       case 2:
-        this->Basis->SetMaximumRank(this->In.Int(-5, 20));
-        this->Pca->SetMaximumNumberOfComponents(this->In.Int(-5, 50));
+      {
+        // Out of range: refused with an error, the setting unchanged.
+        const int rank = this->In.Int(-5, 20), components = this->In.Int(-5, 50);
+        const int rankBefore = this->Basis->GetMaximumRank();
+        const int rankSet = this->Basis->SetMaximumRank(rank);
+        LCT_FUZZ_CHECK(rankSet == (rank >= 0 && rank <= 12) &&
+            this->Basis->GetMaximumRank() == (rankSet ? rank : rankBefore),
+          "SetMaximumRank(" << rank << ") returned " << rankSet);
+        LCT_FUZZ_CHECK(this->Pca->SetMaximumNumberOfComponents(components) == (components >= 0),
+          "SetMaximumNumberOfComponents(" << components << ")");
         break;
+      }
       default:
-        this->Pca->SetParametrisation(this->In.Int(-1, 2));
+      {
+        const int parametrisation = this->In.Int(-1, 2);
+        LCT_FUZZ_CHECK(this->Pca->SetParametrisation(parametrisation) ==
+            (parametrisation >= 0 && parametrisation <= 1),
+          "SetParametrisation(" << parametrisation << ")");
         this->Pca->SetRootChannel(this->In.Int(-3, 5));
         this->Pca->SetChannelWeight(this->In.Int(-1, 4), this->In.Double());
         break;
+      }
     }
   }
 

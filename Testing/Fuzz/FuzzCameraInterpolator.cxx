@@ -356,11 +356,15 @@ private:
       this->Keys.empty() ? 0.0 : this->Keys.rbegin()->first, static_cast<int>(this->Keys.size()),
       [this] { return this->ErrorCount(); },
       [this](lct_fuzz::Input& in) {
-        const int measure = in.Int(-2, 4);
+        const int measure = in.Int(-2, 4), before = this->Path->GetConstantSpeedMeasure();
         LCT_FUZZ_TRACE("SetConstantSpeedMeasure " << measure);
-        this->Path->SetConstantSpeedMeasure(measure); // clamped, as vtkSetClampMacro does
-        return std::make_pair(
-          this->Path->GetConstantSpeedMeasure() == std::clamp(measure, 0, 2), true);
+        // Out of range: refused with an error, the measure unchanged.
+        const bool valid = measure >= 0 && measure <= 2;
+        const int result = this->Path->SetConstantSpeedMeasure(measure);
+        LCT_FUZZ_CHECK(this->Path->GetConstantSpeedMeasure() == (valid ? measure : before),
+          "SetConstantSpeedMeasure(" << measure << ") left "
+                                     << this->Path->GetConstantSpeedMeasure());
+        return std::make_pair(result, valid);
       });
   }
 
@@ -386,11 +390,12 @@ private:
         const int old = this->Path->GetInterpolationType();
         const int errors = this->ErrorCount();
         const int result = this->Path->SetInterpolationType(type);
-        // Clamped; refused (reported, unchanged) only by the CameraMatrix method.
-        LCT_FUZZ_CHECK(result == 1 ? this->Path->GetInterpolationType() == std::clamp(type, 0, 3) &&
-              this->ErrorCount() == errors
-                                   : this->CameraMatrix() &&
-              this->Path->GetInterpolationType() == old && this->ErrorCount() > errors,
+        // Refused (reported, unchanged) out of range, or by the CameraMatrix method.
+        const bool valid = type >= 0 && type <= 3;
+        LCT_FUZZ_CHECK(result == 1
+            ? valid && this->Path->GetInterpolationType() == type && this->ErrorCount() == errors
+            : (!valid || this->CameraMatrix()) && this->Path->GetInterpolationType() == old &&
+              this->ErrorCount() > errors,
           "SetInterpolationType(" << type << ") returned " << result);
         break;
       }

@@ -469,13 +469,13 @@ private:
         const int old = this->Path->GetInterpolationType();
         const int errors = this->ErrorCount();
         const int result = this->Path->SetInterpolationType(type);
-        // Clamped as vtkSetClampMacro does; refused (reported, unchanged) when the keys miss a
-        // log its curve points combine.
-        const int expected = std::clamp(type, 0, 4);
+        // Refused (reported, unchanged) out of range, or when the keys miss a log its curve
+        // points combine.
+        const bool valid = type >= 0 && type <= 4;
         LCT_FUZZ_CHECK(result == 1
-            ? this->Path->GetInterpolationType() == expected && this->ErrorCount() == errors
+            ? valid && this->Path->GetInterpolationType() == type && this->ErrorCount() == errors
             : result == 0 && this->Path->GetInterpolationType() == old &&
-              this->ErrorCount() > errors && !this->Keys.empty(),
+              this->ErrorCount() > errors && (!valid || !this->Keys.empty()),
           "SetInterpolationType(" << type << ") returned " << result << ", type "
                                   << this->Path->GetInterpolationType());
         break;

@@ -3,9 +3,13 @@
 // and nothing non-finite is ever written.
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkCameraPathMetric.h"
+#include "vtkInterpolatorCueLCT.h"
 #include "vtkLogTransform.h"
+#include "vtkProbeDeformerLCT.h"
+#include "vtkShapeBlenderLCT.h"
 #include "vtkTransformBasisLCT.h"
 #include "vtkTransformInterpolatorLCT.h"
+#include "vtkTransformSequencePCA.h"
 
 #include "RandomTransforms.h"
 #include "VtkTestHelpers.h"
@@ -732,8 +736,8 @@ TEST(FuzzFindings, D33MatrixLogExpOfATurnWoundBeyondTheLimitIsRefused)
   vtkNew<ErrorCounter> errors;
   t->AddObserver(vtkCommand::ErrorEvent, errors);
   ASSERT_EQ(t->SetParametrisationToMatrixLog(), 1);
-  const double wound[12] = { -4, 1, -4, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0,
-    0, 0 };
+  const double wound[12] = { -4, 1, -4, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0, 0,
+    0 };
   const vtkMTimeType mtime = t->GetMTime();
   EXPECT_EQ(t->SetLogCoordinates(wound), 0);
   EXPECT_EQ(errors->Count, 1);
@@ -783,8 +787,8 @@ TEST(Robustness, PolarExpOfATurnWoundBeyondTheLimitIsRefused)
   EXPECT_NEAR(t->GetMatrix()->GetElement(1, 0), -std::sqrt(0.75), 1e-9);
   EXPECT_EQ(errors->Count, before);
   // Log coordinates wound beyond the limit, as D33 for MatrixLog.
-  const double wound[12] = { 0, 0, 0, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0,
-    0, 0 };
+  const double wound[12] = { 0, 0, 0, 562949953421312, 100000000, 562949953421312, 0, 0, 0, 0, 0,
+    0 };
   EXPECT_EQ(t->SetLogCoordinates(wound), 0);
   EXPECT_TRUE(contains(errors->Last, "cannot be computed accurately")) << errors->Last;
 }
@@ -1087,4 +1091,85 @@ TEST(FuzzFindings, A4FactorOfANearIdentityBasisIsRefusedWhereDoublesCannotHoldIt
   EXPECT_EQ(basis->SetCoefficientTolerance(std::numeric_limits<double>::quiet_NaN()), 0);
   EXPECT_EQ(errors->Count, before + 3);
   EXPECT_EQ(basis->GetCoefficientTolerance(), 1e-6);
+}
+
+namespace
+{
+/// Every value in `bad` is refused by set (0, one error naming the setter, the setting and the
+/// modification time unchanged); `good` is then accepted.
+template <typename Object, typename Value, typename Get>
+void expectRefusedOutsideRange(Object* object, int (Object::*set)(Value), Get get,
+  std::initializer_list<Value> bad, Value good, const char* setter)
+{
+  vtkNew<ErrorCounter> errors;
+  const unsigned long observer = object->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (const Value value : bad)
+  {
+    const Value before = (object->*get)();
+    const vtkMTimeType mtime = object->GetMTime();
+    const int count = errors->Count;
+    EXPECT_EQ((object->*set)(value), 0) << setter << "(" << value << ")";
+    EXPECT_EQ(errors->Count, count + 1) << setter << "(" << value << ")";
+    EXPECT_TRUE(contains(errors->Last, setter)) << errors->Last;
+    EXPECT_EQ((object->*get)(), before) << setter << "(" << value << ")";
+    EXPECT_EQ(object->GetMTime(), mtime) << setter << "(" << value << ")";
+  }
+  EXPECT_EQ((object->*set)(good), 1) << setter << "(" << good << ")";
+  EXPECT_EQ((object->*get)(), good) << setter;
+  object->RemoveObserver(observer);
+}
+} // namespace
+
+TEST(Robustness, SettersRefuseValuesOutOfRangeInsteadOfClampingThem)
+{
+  // vtkSetClampMacro clamped these silently (SetConstantSpeedMeasure(7) set the focal point,
+  // SetAspect(NaN) stored NaN); each is now refused with an error and changes nothing.
+  const double nan = std::nan("");
+  vtkNew<vtkCameraInterpolatorLCT> camera;
+  expectRefusedOutsideRange(camera.Get(), &vtkCameraInterpolatorLCT::SetConstantSpeedMeasure,
+    &vtkCameraInterpolatorLCT::GetConstantSpeedMeasure, { -1, 3, 7 },
+    static_cast<int>(vtkCameraInterpolatorLCT::CONSTANT_SPEED_EYE), "SetConstantSpeedMeasure");
+  expectRefusedOutsideRange(camera.Get(), &vtkCameraInterpolatorLCT::SetInterpolationType,
+    &vtkCameraInterpolatorLCT::GetInterpolationType, { -1, 4 }, 0, "SetInterpolationType");
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  expectRefusedOutsideRange(path.Get(), &vtkTransformInterpolatorLCT::SetInterpolationType,
+    &vtkTransformInterpolatorLCT::GetInterpolationType, { -1, 5 }, 0, "SetInterpolationType");
+  vtkNew<vtkCameraPathMetric> metric;
+  expectRefusedOutsideRange(metric.Get(), &vtkCameraPathMetric::SetAspect,
+    &vtkCameraPathMetric::GetAspect,
+    { nan, 0.0, -1.0, 1e7, std::numeric_limits<double>::infinity() }, 2.0, "SetAspect");
+  expectRefusedOutsideRange(metric.Get(), &vtkCameraPathMetric::SetNumberOfSamples,
+    &vtkCameraPathMetric::GetNumberOfSamples, { 1, -5, 100001 }, 10, "SetNumberOfSamples");
+  expectRefusedOutsideRange(metric.Get(), &vtkCameraPathMetric::SetSamplesPerSegment,
+    &vtkCameraPathMetric::GetSamplesPerSegment, { 1, 1001 }, 20, "SetSamplesPerSegment");
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  expectRefusedOutsideRange(cue.Get(), &vtkInterpolatorCueLCT::SetKeyTimeMapping,
+    &vtkInterpolatorCueLCT::GetKeyTimeMapping, { -1, 2 },
+    static_cast<int>(vtkInterpolatorCueLCT::KEY_TIME_MAPPING_CUE_TIME), "SetKeyTimeMapping");
+  vtkNew<vtkProbeDeformerLCT> deformer;
+  expectRefusedOutsideRange(deformer.Get(), &vtkProbeDeformerLCT::SetBlendMode,
+    &vtkProbeDeformerLCT::GetBlendMode, { -1, 4 },
+    static_cast<int>(vtkProbeDeformerLCT::DUAL_QUATERNION), "SetBlendMode");
+  expectRefusedOutsideRange(deformer.Get(), &vtkProbeDeformerLCT::SetWeightMode,
+    &vtkProbeDeformerLCT::GetWeightMode, { -1, 3 }, static_cast<int>(vtkProbeDeformerLCT::CUTOFF),
+    "SetWeightMode");
+  expectRefusedOutsideRange(deformer.Get(), &vtkProbeDeformerLCT::SetNormalization,
+    &vtkProbeDeformerLCT::GetNormalization, { -1, 3 },
+    static_cast<int>(vtkProbeDeformerLCT::NORMALIZE_NONE), "SetNormalization");
+  expectRefusedOutsideRange(deformer.Get(), &vtkProbeDeformerLCT::SetSerialThreshold,
+    &vtkProbeDeformerLCT::GetSerialThreshold, { vtkIdType(-1) }, vtkIdType(5),
+    "SetSerialThreshold");
+  vtkNew<vtkShapeBlenderLCT> blender;
+  expectRefusedOutsideRange(blender.Get(), &vtkShapeBlenderLCT::SetSerialThreshold,
+    &vtkShapeBlenderLCT::GetSerialThreshold, { vtkIdType(-3) }, vtkIdType(0), "SetSerialThreshold");
+  vtkNew<vtkTransformBasisLCT> basis;
+  expectRefusedOutsideRange(basis.Get(), &vtkTransformBasisLCT::SetMaximumRank,
+    &vtkTransformBasisLCT::GetMaximumRank, { -1, 13 }, 3, "SetMaximumRank");
+  vtkNew<vtkTransformSequencePCA> pca;
+  expectRefusedOutsideRange(pca.Get(), &vtkTransformSequencePCA::SetParametrisation,
+    &vtkTransformSequencePCA::GetParametrisation, { -1, 2 },
+    static_cast<int>(vtkTransformSequencePCA::MATRIX_LOG), "SetParametrisation");
+  expectRefusedOutsideRange(pca.Get(), &vtkTransformSequencePCA::SetMaximumNumberOfComponents,
+    &vtkTransformSequencePCA::GetMaximumNumberOfComponents, { -1 }, 4,
+    "SetMaximumNumberOfComponents");
 }
