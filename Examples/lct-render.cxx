@@ -2753,8 +2753,10 @@ int main(int argc, char* argv[])
         metric->GetSamplesPerSegment());
       for (int k = 0; k < std::min(segments, 8); ++k)
       {
+        // The times at which the path passes the two keys (their arrival times under constant
+        // speed).
         std::printf("lct-render:   segment %d (t = %s..%s): %.2f %% / %.2f %%\n", k,
-          Num(keys.Camera[k].Time).c_str(), Num(keys.Camera[k + 1].Time).c_str(),
+          Num(metric->GetKeyPassTime(k)).c_str(), Num(metric->GetKeyPassTime(k + 1)).c_str(),
           metric->GetSegmentCameraSpaceExcess(k), metric->GetSegmentScreenSpaceExcess(k));
       }
     };

@@ -9,6 +9,7 @@
 #include "vtkCameraInterpolator.h"
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkCollection.h"
+#include "vtkDoubleArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -33,6 +34,7 @@ struct vtkCameraPathMetric::SegmentResults
 {
   std::map<double, vtkSmartPointer<vtkCamera>> Keys;
   lct::SegmentPathMetricResult Result;
+  std::vector<double> PassTimes; ///< of the last successful EvaluateSegments
 };
 
 //------------------------------------------------------------------------------
@@ -73,7 +75,8 @@ int vtkCameraPathMetric::GetNumberOfKeyCameras()
 
 //------------------------------------------------------------------------------
 template <typename Sampler>
-int vtkCameraPathMetric::MeasureSegments(const char* caller, Sampler&& sample)
+int vtkCameraPathMetric::MeasureSegments(
+  const char* caller, Sampler&& sample, const std::vector<double>* passTimes)
 {
   const auto& keys = this->Segments->Keys;
   if (keys.size() < 2)
@@ -111,15 +114,34 @@ int vtkCameraPathMetric::MeasureSegments(const char* caller, Sampler&& sample)
                   << "Results unchanged.");
     return 0;
   }
+  // The times at which the path passes the keys: their own, or (ConstantSpeed) passTimes.
+  std::vector<double> pass;
+  for (const auto& key : keys)
+  {
+    pass.push_back(key.first);
+  }
+  if (passTimes)
+  {
+    if (passTimes->size() != keys.size())
+    {
+      vtkErrorMacro(<< caller << ": the path passes " << passTimes->size()
+                    << " keys (ConstantSpeed moves the times at which it passes them) and there "
+                    << "are " << keys.size() << " key cameras: give the metric the path's keys "
+                    << "(AddKeyCamera) so that each key is compared where the path passes it; "
+                    << "results unchanged.");
+      return 0;
+    }
+    pass = *passTimes;
+  }
   vtkNew<vtkCamera> camera;
-  for (auto it = keys.begin(), next = std::next(it); next != keys.end(); ++it, ++next)
+  int k = 0;
+  for (auto it = keys.begin(), next = std::next(it); next != keys.end(); ++it, ++next, ++k)
   {
     add(it->second, keyViews, keyProjections);
     for (int s = 0; s < n; ++s)
     {
-      // The ends exactly at the key times (no rounding of t0 + (t1 - t0) * 1).
-      const double t =
-        s == n - 1 ? next->first : it->first + (next->first - it->first) * s / (n - 1);
+      // The ends exactly at the pass times (no rounding of t0 + (t1 - t0) * 1).
+      const double t = s == n - 1 ? pass[k + 1] : pass[k] + (pass[k + 1] - pass[k]) * s / (n - 1);
       if (!sample(t, it, next, camera.Get()) || !add(camera, views, projections))
       {
         vtkErrorMacro(<< caller << ": the path failed at t = " << t << "; results unchanged.");
@@ -138,6 +160,7 @@ int vtkCameraPathMetric::MeasureSegments(const char* caller, Sampler&& sample)
     return 0;
   }
   this->Segments->Result = std::move(r);
+  this->Segments->PassTimes = std::move(pass);
   const lct::SegmentPathMetricResult& out = this->Segments->Result;
   this->TotalCameraSpaceExcess = out.total.camera;
   this->TotalScreenSpaceExcess = out.total.screen;
@@ -156,8 +179,26 @@ int vtkCameraPathMetric::EvaluateSegments(vtkCameraInterpolatorLCT* path)
     vtkErrorMacro(<< "EvaluateSegments: null path; results unchanged.");
     return 0;
   }
-  return this->MeasureSegments("EvaluateSegments",
-    [path](double t, auto, auto, vtkCamera* c) { return path->InterpolateCamera(t, c) != 0; });
+  std::vector<double> arrivals;
+  if (path->GetConstantSpeed())
+  {
+    // The path passes its keys at other times than theirs: sample between those.
+    vtkNew<vtkDoubleArray> times;
+    if (!path->GetKeyArrivalTimes(times))
+    {
+      vtkErrorMacro(<< "EvaluateSegments: the times at which the ConstantSpeed path passes its "
+                    << "keys cannot be computed (see the path's error); results unchanged.");
+      return 0;
+    }
+    for (vtkIdType i = 0; i < times->GetNumberOfTuples(); ++i)
+    {
+      arrivals.push_back(times->GetValue(i));
+    }
+  }
+  return this->MeasureSegments(
+    "EvaluateSegments",
+    [path](double t, auto, auto, vtkCamera* c) { return path->InterpolateCamera(t, c) != 0; },
+    path->GetConstantSpeed() ? &arrivals : nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -169,7 +210,8 @@ int vtkCameraPathMetric::EvaluateSegments(vtkCameraInterpolator* path, int lerpW
     return 0;
   }
   return this->MeasureSegments(
-    "EvaluateSegments", [path, lerpWindowCenter](double t, auto key, auto next, vtkCamera* c) {
+    "EvaluateSegments",
+    [path, lerpWindowCenter](double t, auto key, auto next, vtkCamera* c) {
       path->InterpolateCamera(t, c); // VTK 9.1 reports no failure
       if (lerpWindowCenter)
       {
@@ -179,7 +221,8 @@ int vtkCameraPathMetric::EvaluateSegments(vtkCameraInterpolator* path, int lerpW
         c->SetWindowCenter((1 - u) * a[0] + u * b[0], (1 - u) * a[1] + u * b[1]);
       }
       return true;
-    });
+    },
+    nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -221,6 +264,13 @@ double vtkCameraPathMetric::GetKeyMissScreenSpace(int key)
 {
   const auto& keys = this->Segments->Result.keys;
   return key >= 0 && key < static_cast<int>(keys.size()) ? keys[key].screen : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraPathMetric::GetKeyPassTime(int key)
+{
+  const auto& times = this->Segments->PassTimes;
+  return key >= 0 && key < static_cast<int>(times.size()) ? times[key] : 0.0;
 }
 
 //------------------------------------------------------------------------------

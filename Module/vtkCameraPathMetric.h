@@ -144,7 +144,11 @@ public:
    * The per-segment measure of `path` against the key cameras (at least two). With VTK's
    * interpolator and `lerpWindowCenter` on, each sampled camera gets the window centre
    * interpolated linearly in time between the key cameras' (VTK 9.1 ignores the window centre,
-   * so its path would otherwise miss every key with a shifted one). Returns 1 on success, 0
+   * so its path would otherwise miss every key with a shifted one). A vtkCameraInterpolatorLCT
+   * under ConstantSpeed passes its keys at other times than theirs (GetKeyArrivalTimes): each
+   * segment is then sampled between the times at which the path passes its two keys, so that
+   * the same path reads the same with and without ConstantSpeed (give the metric the path's own
+   * keys). Returns 1 on success, 0
    * (with an error, results unchanged) without points or key cameras, with a NaN/Inf point, a
    * null path, a path that fails at a sample, more than 2e6 samples in all, or when no point can
    * be measured.
@@ -159,7 +163,9 @@ public:
    * total (against the polygon through the key positions), excess in camera space and on the
    * screen in percent; points that leave the view between two keys at which they are in view;
    * per key the mean miss of the path (camera space: % of the point's distance; screen: % of
-   * the screen height) and the largest over the keys. Out-of-range indices give 0.
+   * the screen height) and the largest over the keys; the time at which the path was compared
+   * with each key (its key time, or its arrival time under ConstantSpeed). Out-of-range indices
+   * give 0.
    */
   int GetNumberOfSegments();
   double GetSegmentCameraSpaceExcess(int k);
@@ -167,6 +173,7 @@ public:
   int GetSegmentPointsLeavingView(int k);
   double GetKeyMissCameraSpace(int key);
   double GetKeyMissScreenSpace(int key);
+  double GetKeyPassTime(int key);
   vtkGetMacro(TotalCameraSpaceExcess, double);
   vtkGetMacro(TotalScreenSpaceExcess, double);
   vtkGetMacro(NumberOfPointsLeavingViewBetweenKeys, int);
@@ -198,8 +205,9 @@ private:
   void Sample(vtkCamera* camera);
   int Measure();
   /// Samples every key segment through `sample(t, camera)` and measures against the keys.
+  /// passTimes: the times at which the path passes the keys (null: the keys' own times).
   template <typename Sampler>
-  int MeasureSegments(const char* caller, Sampler&& sample);
+  int MeasureSegments(const char* caller, Sampler&& sample, const std::vector<double>* passTimes);
 
   struct SegmentResults;
   std::unique_ptr<SegmentResults> Segments;

@@ -9,6 +9,7 @@
 #include "vtkCamera.h"
 #include "vtkCameraInterpolator.h"
 #include "vtkCameraInterpolatorLCT.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 
@@ -244,4 +245,56 @@ TEST(SegmentPathMetric, VtkClassMeasuresAgainstTheKeysAndLerpsVtksWindowCenter)
   EXPECT_EQ(metric->AddKeyCamera(NAN, nullptr), 0);
   EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
   EXPECT_EQ(metric->GetSegmentCameraSpaceExcess(7), 0.0);
+}
+
+TEST(SegmentPathMetric, ConstantSpeedPathReadsAsTheSamePath)
+{
+  // ConstantSpeed changes when the path passes its keys, not the path. Sampled between the key
+  // times, the audit's keys read 63 % excess and a 6.9 % key miss with it and 3.1 % and 0
+  // without; each segment is now sampled between the times the path passes its keys.
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCameraPathMetric> metric;
+  const double times[] = { 0, 0.2, 1, 3 };
+  const double positions[][3] = { { 0, 0, 10 }, { 3, 0, 9 }, { 6, 2, 6 }, { 9, 0, 0 } };
+  const double focal[][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(positions[k]);
+    key->SetFocalPoint(focal[k]);
+    key->SetViewUp(0, 1, 0);
+    ASSERT_EQ(path->AddCamera(times[k], key), 1);
+    ASSERT_EQ(metric->AddKeyCamera(times[k], key), 1);
+  }
+  vtkNew<vtkPoints> points;
+  for (const auto& p : randomPoints(100, -1.0, 1.0))
+  {
+    points->InsertNextPoint(p.data());
+  }
+  metric->SetPoints(points);
+  ASSERT_EQ(metric->EvaluateSegments(path), 1);
+  const double camera = metric->GetTotalCameraSpaceExcess();
+  const double screen = metric->GetTotalScreenSpaceExcess();
+  EXPECT_EQ(metric->GetKeyPassTime(1), 0.2);
+  path->ConstantSpeedOn();
+  ASSERT_EQ(metric->EvaluateSegments(path), 1);
+  // The same path, sampled at other curve times: equal to the sampling's convergence.
+  EXPECT_NEAR(metric->GetTotalCameraSpaceExcess(), camera, 1e-2 * camera);
+  EXPECT_NEAR(metric->GetTotalScreenSpaceExcess(), screen, 1e-2 * screen);
+  EXPECT_LT(metric->GetLargestKeyMissCameraSpace(), 1e-9);
+  EXPECT_LT(metric->GetLargestKeyMissScreenSpace(), 1e-9);
+  vtkNew<vtkDoubleArray> arrivals;
+  ASSERT_EQ(path->GetKeyArrivalTimes(arrivals), 1);
+  for (int k = 0; k < 4; ++k)
+  {
+    EXPECT_EQ(metric->GetKeyPassTime(k), arrivals->GetValue(k));
+  }
+  EXPECT_NE(metric->GetKeyPassTime(1), 0.2);
+  // Key cameras that are not the path's keys cannot be matched to its arrival times.
+  vtkNew<vtkCamera> extra;
+  extra->SetPosition(9, 0, 1);
+  ASSERT_EQ(metric->AddKeyCamera(4, extra), 1);
+  const double kept = metric->GetTotalCameraSpaceExcess();
+  EXPECT_EQ(metric->EvaluateSegments(path), 0);
+  EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
 }
