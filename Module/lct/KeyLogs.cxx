@@ -3,6 +3,7 @@
 #include "lct/Affine.h"
 #include "lct/MatrixLogParametrisation.h"
 #include "lct/Parametrisation.h"
+#include "lct/SO3.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -437,7 +438,8 @@ Status KeyLogs::combineAbout(
       }
       return status;
     }
-    sum += w.weight[j] * *l;
+    sum += w.weight[j] *
+      (std::abs(w.key[j] - reference) >= 2 ? this->continuedRelative(w.key[j], reference, *l) : *l);
   }
   const auto m = exponential(sum, this->P);
   if (!m)
@@ -452,6 +454,28 @@ Status KeyLogs::combineAbout(
   }
   out = result;
   return Status::Ok;
+}
+
+LogCoords KeyLogs::continuedRelative(int i, int r, const LogCoords& principal) const
+{
+  if (this->P != Parametrisation::Polar)
+  {
+    return principal; // principal matrix logs only
+  }
+  const int step = i > r ? 1 : -1;
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero(); // key r's own: log(M_r^-1 M_r) = 0
+  for (int k = r + step; k != i; k += step)
+  {
+    const LogCoords* between = this->relative(k, r);
+    if (!between)
+    {
+      return principal;
+    }
+    previous = nearestEquivalentRotation(rotationPart(*between), previous);
+  }
+  LogCoords continued = principal;
+  rotationPart(continued) = nearestEquivalentRotation(rotationPart(principal), previous);
+  return continued;
 }
 
 Status KeyLogs::checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) const

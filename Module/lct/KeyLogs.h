@@ -6,8 +6,11 @@
  *
  * For keys M_0 .. M_(n-1) it keeps log(M_r^-1 M_i) for |i - r| <= kReach (the relative form, in
  * the reference key's own frame) and the absolute logs log M_i, each on the rotation branch
- * nearest to its predecessor's (Kaji & Ochiai Algorithm 1). Given curve weights w summing to 1
- * (lct/Curves.h):
+ * nearest to its predecessor's (Kaji & Ochiai Algorithm 1). The relative logs are principal;
+ * a curve point takes those of keys two or more from its reference (Polar) on the rotation
+ * branch continued through the keys between, each nearest the one before it, so keys turning
+ * by 100 degrees each do not wind back where two of them turn by 200. Given curve weights w
+ * summing to 1 (lct/Curves.h):
  *
  * - combineRelative: M_r exp(sum_i w_i log(M_r^-1 M_i)) with M_r the point of largest weight.
  *   Hawkins & Grimm put the reference on the other side (their matrices map world to camera);
@@ -190,6 +193,12 @@ private:
   void updateAbsoluteFrom(int index);
   Status combineAbout(
     const CurveWeights& w, int reference, Eigen::Matrix4d& out, MissingLog* missing) const;
+  /// `principal` = log(M_r^-1 M_i) with its Polar rotation on the branch continued through the
+  /// keys between r and i, each nearest the one before it (Kaji & Ochiai Algorithm 1): keys that
+  /// turn by less than pi each keep turning the same way where two or three of them together
+  /// turn by more (a Catmull-Rom stencil reaches two keys from its reference). `principal` as it
+  /// is when a log between is missing.
+  LogCoords continuedRelative(int i, int r, const LogCoords& principal) const;
   Status combineRelativeUnchecked(
     const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const;
 

@@ -209,6 +209,42 @@ TEST(CameraInterpolatorLCT, ShortWayOverHalfATurnAndFullOrbits)
   }
 }
 
+TEST(CameraInterpolatorLCT, OrbitsOfUpTo170DegreesPerKeyTurnEvenly)
+{
+  // An orbit 100-170 degrees per key: every scheme turns forward at the keys' even rate (the
+  // keys are evenly timed and spaced). Combining the key two steps away the short way turned
+  // 100-170 degree orbits back by up to 4 degrees and off the even rate by up to 21.
+  auto orbitKey = [](double degrees, vtkCamera* c) {
+    const double a = degrees * lct_test::kPi / 180.0;
+    c->SetFocalPoint(0, 0, 0);
+    c->SetPosition(5 * std::cos(a), 5 * std::sin(a), 0);
+    c->SetViewUp(0, 0, 1);
+  };
+  for (const double step : { 100.0, 135.0, 170.0 })
+  {
+    for (const int type : { vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
+           vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION })
+    {
+      vtkNew<vtkCameraInterpolatorLCT> orbit;
+      ASSERT_EQ(orbit->SetInterpolationType(type), 1);
+      for (int k = 0; k <= 5; ++k)
+      {
+        vtkNew<vtkCamera> key;
+        orbitKey(step * k, key);
+        ASSERT_EQ(orbit->AddCamera(k, key), 1);
+      }
+      vtkNew<vtkCamera> out;
+      for (int i = 0; i <= 100; ++i)
+      {
+        const double t = i / 20.0;
+        ASSERT_EQ(orbit->InterpolateCamera(t, out), 1);
+        EXPECT_NEAR(std::remainder(azimuthDegrees(out) - step * t, 360.0), 0.0, 1e-6)
+          << step << " degrees per key, type " << type << ", t = " << t;
+      }
+    }
+  }
+}
+
 TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
 {
   vtkNew<vtkCameraInterpolatorLCT> interpolator;

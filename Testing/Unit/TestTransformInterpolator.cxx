@@ -212,9 +212,10 @@ TEST(TransformInterpolatorLCT, ShortWayByDefaultSpinWithConsistentRotation)
 
   // A spin sampled at 0, 170, 340, 510 degrees: with ConsistentRotation the spline sees the
   // winding (its keys' logs are 0, 170, 340, 510 degrees, and Catmull-Rom reproduces that
-  // linear motion exactly: 255 degrees at t = 1.5). Without it, the step from the key at 170 to
-  // the key at 510 relative to the reference key is taken the short way (-20 + 360 k), which
-  // bends the spline.
+  // linear motion exactly: 255 degrees at t = 1.5). Without it too: the step from the key at
+  // 170 to the key at 510, relative to the reference key, is taken on the branch continued
+  // through the key between (340 degrees, not the short way's -20, which bent the spline by
+  // more than 10 degrees before).
   vtkNew<vtkTransformInterpolatorLCT> spin;
   for (int k = 0; k < 4; ++k)
   {
@@ -235,7 +236,44 @@ TEST(TransformInterpolatorLCT, ShortWayByDefaultSpinWithConsistentRotation)
     const double t = i / 10.0;
     worst = std::max(worst, std::abs(std::remainder(angleAt(spin, t) - 170.0 * t, 360.0)));
   }
-  EXPECT_GT(worst, 10.0);
+  EXPECT_LT(worst, 1e-9);
+}
+
+TEST(TransformInterpolatorLCT, KeysTurningLessThanHalfATurnEachAreFollowedTheWholeWay)
+{
+  // Keys 100 to 170 degrees apart about z (unevenly): each step is taken the short way, and the
+  // curve between keys keeps turning the same way. Catmull-Rom, the B-spline and the 4-point
+  // scheme combine keys two steps from their reference, more than 180 degrees away: taken the
+  // short way, those wound the curve back by up to 6.6 degrees in each segment.
+  const double steps[] = { 100, 150, 170, 120, 135, 100 };
+  for (const int type : { vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
+         vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE,
+         vtkTransformInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION })
+  {
+    vtkNew<vtkTransformInterpolatorLCT> path;
+    ASSERT_EQ(path->SetInterpolationType(type), 1);
+    double angle = 0.0;
+    for (int k = 0; k <= 6; ++k)
+    {
+      vtkNew<vtkTransform> key;
+      key->RotateZ(angle);
+      ASSERT_EQ(path->AddTransform(k, key), 1);
+      angle += k < 6 ? steps[k] : 0.0;
+    }
+    vtkNew<vtkMatrix4x4> m;
+    double previous = 0.0, largestBack = 0.0;
+    for (int i = 0; i <= 600; ++i)
+    {
+      ASSERT_EQ(path->InterpolateTransform(i / 100.0, m), 1);
+      const double a = std::atan2(m->GetElement(1, 0), m->GetElement(0, 0)) * 180.0 / lct_test::kPi;
+      if (i > 0)
+      {
+        largestBack = std::min(largestBack, std::remainder(a - previous, 360.0));
+      }
+      previous = a;
+    }
+    EXPECT_GE(largestBack, -1e-9) << "type " << type;
+  }
 }
 
 TEST(TransformInterpolatorLCT, VtkSemanticsClampReplaceRemoveAndMTime)
