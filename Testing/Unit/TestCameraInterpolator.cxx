@@ -92,6 +92,16 @@ double azimuthDegrees(vtkCamera* c)
   const double* p = c->GetPosition();
   return std::atan2(p[1], p[0]) * 180.0 / lct_test::kPi;
 }
+
+/// A camera on a circle of radius 5 about the origin in the xy plane, at `degrees` azimuth.
+void orbitKey(double degrees, vtkCamera* c)
+{
+  const double a = degrees * lct_test::kPi / 180.0;
+  c->SetFocalPoint(0, 0, 0);
+  c->SetPosition(5 * std::cos(a), 5 * std::sin(a), 0);
+  c->SetViewUp(0, 0, 1);
+}
+
 } // namespace
 
 TEST(CameraInterpolatorLCT, ReproducesEveryParameterOfEveryKey)
@@ -176,12 +186,6 @@ TEST(CameraInterpolatorLCT, LargeTurnsBetweenKeysNeverFail)
 
 TEST(CameraInterpolatorLCT, ShortWayOverHalfATurnAndFullOrbits)
 {
-  auto orbitKey = [](double degrees, vtkCamera* c) {
-    const double a = degrees * lct_test::kPi / 180.0;
-    c->SetFocalPoint(0, 0, 0);
-    c->SetPosition(5 * std::cos(a), 5 * std::sin(a), 0);
-    c->SetViewUp(0, 0, 1);
-  };
   vtkNew<vtkCameraInterpolatorLCT> halfTurn;
   halfTurn->SetInterpolationTypeToLinear();
   vtkNew<vtkCamera> a, b, out;
@@ -214,12 +218,6 @@ TEST(CameraInterpolatorLCT, OrbitsOfUpTo170DegreesPerKeyTurnEvenly)
   // An orbit 100-170 degrees per key: every scheme turns forward at the keys' even rate (the
   // keys are evenly timed and spaced). Combining the key two steps away the short way turned
   // 100-170 degree orbits back by up to 4 degrees and off the even rate by up to 21.
-  auto orbitKey = [](double degrees, vtkCamera* c) {
-    const double a = degrees * lct_test::kPi / 180.0;
-    c->SetFocalPoint(0, 0, 0);
-    c->SetPosition(5 * std::cos(a), 5 * std::sin(a), 0);
-    c->SetViewUp(0, 0, 1);
-  };
   for (const double step : { 100.0, 135.0, 170.0 })
   {
     for (const int type : { vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE,
