@@ -128,6 +128,10 @@ struct vtkCameraInterpolatorLCT::Internals
   lct::PathTiming Timing;
   vtkLCTPathTiming::ConstantSpeedTable<6> ConstantSpeedTable;
 
+  /// The largest rotation of a step whose twist the screw motion takes (J(w)^-1 is at most
+  /// ~20 |t| below it).
+  static constexpr double kScrewWinding = 2.0 * 3.14159265358979323846 - 0.25;
+
   /// The focal point of the screw motion of the focal frames (lct/ScrewMotion.h) about key r:
   /// f_r + R_r J(w) v with w = sum_j w_j log(R_r^T R_j), v = sum_j w_j J(w_j)^-1 R_r^T (f_j - f_r).
   Eigen::Vector3d ScrewFocalPointAbout(
@@ -140,8 +144,21 @@ struct vtkCameraInterpolatorLCT::Internals
     for (int j = 0; j < w.count; ++j)
     {
       const lct::LogCoords* log = orientations.relative(w.key[j], r);
-      const Eigen::Vector3d step = log ? Eigen::Vector3d(lct::rotationPart(*log))
-                                       : Eigen::Vector3d::Zero(); // rotations always have one
+      Eigen::Vector3d step = log ? Eigen::Vector3d(lct::rotationPart(*log))
+                                 : Eigen::Vector3d::Zero(); // rotations always have one
+      if (log && std::abs(w.key[j] - r) >= 2)
+      {
+        // The rotation the orientations combine (continued through the keys between), so that
+        // keys sampled from one screw motion give that screw motion; but J(w)^-1 grows without
+        // bound as |w| nears 2 pi (a turn of 2 pi has no twist unless it translates along its
+        // axis): beyond kScrewWinding the principal step.
+        const Eigen::Vector3d continued =
+          lct::rotationPart(orientations.continuedRelative(w.key[j], r, *log));
+        if (continued.norm() < kScrewWinding)
+        {
+          step = continued;
+        }
+      }
       const Eigen::Vector3d t = rotation.transpose() *
         (this->Keys[w.key[j]].Camera.focalFrame.topRightCorner<3, 1>() - origin);
       rotationSum += w.weight[j] * step;

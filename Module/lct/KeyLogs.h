@@ -146,6 +146,12 @@ public:
 
   /// log(M_r^-1 M_i), or null when it does not exist or |i - r| > kReach.
   const LogCoords* relative(int i, int r) const;
+  /// `principal` = *relative(i, r) with its Polar rotation on the branch continued through the
+  /// keys between r and i, each nearest the one before it (Kaji & Ochiai Algorithm 1), as curve
+  /// points combine it: keys that turn by less than pi each keep turning the same way where two
+  /// or three of them together turn by more (a Catmull-Rom stencil reaches two keys from its
+  /// reference). `principal` as it is for MatrixLog, or when a log between is missing.
+  LogCoords continuedRelative(int i, int r, const LogCoords& principal) const;
   /// Why relative(i, r) is null (Ok when it is not; InvalidArgument beyond reach).
   Status relativeStatus(int i, int r) const;
 
@@ -193,12 +199,6 @@ private:
   void updateAbsoluteFrom(int index);
   Status combineAbout(
     const CurveWeights& w, int reference, Eigen::Matrix4d& out, MissingLog* missing) const;
-  /// `principal` = log(M_r^-1 M_i) with its Polar rotation on the branch continued through the
-  /// keys between r and i, each nearest the one before it (Kaji & Ochiai Algorithm 1): keys that
-  /// turn by less than pi each keep turning the same way where two or three of them together
-  /// turn by more (a Catmull-Rom stencil reaches two keys from its reference). `principal` as it
-  /// is when a log between is missing.
-  LogCoords continuedRelative(int i, int r, const LogCoords& principal) const;
   Status combineRelativeUnchecked(
     const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const;
 
