@@ -40,6 +40,10 @@ struct Target
 struct GeometryKey
 {
   const void* Mesh = nullptr;
+  /// The mesh object's own time too (not vtkDataSet::GetMTime, which point data arrays also
+  /// advance): vtkPoints::SetPoint does not modify the points, and a user who then calls
+  /// Modified() on the mesh (the usual way) changes only the mesh's own time.
+  vtkMTimeType MeshTime = 0;
   const void* Points = nullptr;
   vtkMTimeType PointsTime = 0;
   const void* Polys = nullptr;
@@ -48,8 +52,9 @@ struct GeometryKey
 
   bool operator==(const GeometryKey& o) const
   {
-    return Mesh == o.Mesh && Points == o.Points && PointsTime == o.PointsTime && Polys == o.Polys &&
-      PolysTime == o.PolysTime && StripsTime == o.StripsTime;
+    return Mesh == o.Mesh && MeshTime == o.MeshTime && Points == o.Points &&
+      PointsTime == o.PointsTime && Polys == o.Polys && PolysTime == o.PolysTime &&
+      StripsTime == o.StripsTime;
   }
 };
 
@@ -57,6 +62,7 @@ GeometryKey keyOf(vtkPolyData* pd)
 {
   GeometryKey k;
   k.Mesh = pd;
+  k.MeshTime = pd->vtkObject::GetMTime();
   k.Points = pd->GetPoints();
   k.PointsTime = pd->GetPoints() ? pd->GetPoints()->GetMTime() : 0;
   k.Polys = pd->GetPolys();
