@@ -33,6 +33,27 @@ std::string number(double x)
   return buffer;
 }
 
+/// `name` as one BVH token: readers split names at white space and take "{" and "}" as the
+/// block's braces, so those (and control characters) become '_'; an empty name becomes
+/// joint_<index>.
+std::string bvhName(const std::string& name, int index)
+{
+  if (name.empty())
+  {
+    return "joint_" + std::to_string(index);
+  }
+  std::string token = name;
+  for (char& c : token)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u <= ' ' || u == 0x7f || c == '{' || c == '}')
+    {
+      c = '_';
+    }
+  }
+  return token;
+}
+
 bool fail(std::string* why, const std::string& reason)
 {
   if (why)
@@ -120,6 +141,22 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       }
     }
   }
+  // One hierarchy: a BVH file has one ROOT (readers stop at a second one).
+  int roots = 0;
+  std::string rootNames;
+  for (int j = 0; j < n; ++j)
+  {
+    if (animation.joints[static_cast<std::size_t>(j)].parent < 0)
+    {
+      rootNames += (roots++ ? ", " : "") + animation.joints[static_cast<std::size_t>(j)].name;
+    }
+  }
+  if (roots != 1)
+  {
+    return fail(why,
+      "a BVH file holds one hierarchy (one ROOT) and this skeleton has " + std::to_string(roots) +
+        " root joints (" + rootNames + ")");
+  }
   // Children lists, for the nested blocks; an End Site block cannot hold others.
   std::vector<std::vector<int>> children(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j)
@@ -162,10 +199,15 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       out << indent << "}\n";
       continue;
     }
-    const Eigen::Vector3d& o = offsets[static_cast<std::size_t>(j)];
+    // A joint with position channels sits at OFFSET 0: readers that add the channels to the
+    // OFFSET (the BVH text's reading) and readers that take them instead of it (assimp, so the
+    // module's own reader) then agree.
+    const Eigen::Vector3d o = moves[static_cast<std::size_t>(j)]
+      ? Eigen::Vector3d::Zero()
+      : offsets[static_cast<std::size_t>(j)];
     out << indent
         << (joint.endSite ? std::string("End Site")
-                          : (joint.parent < 0 ? "ROOT " : "JOINT ") + joint.name)
+                          : (joint.parent < 0 ? "ROOT " : "JOINT ") + bvhName(joint.name, j))
         << "\n"
         << indent << "{\n"
         << indent << "\tOFFSET " << number(o[0]) << " " << number(o[1]) << " " << number(o[2])
@@ -206,7 +248,7 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       const Eigen::Matrix4d& m = animation.local(f, j);
       if (moves[static_cast<std::size_t>(j)])
       {
-        const Eigen::Vector3d p = m.topRightCorner<3, 1>() - offsets[static_cast<std::size_t>(j)];
+        const Eigen::Vector3d p = m.topRightCorner<3, 1>(); // at OFFSET 0
         row += number(p[0]) + " " + number(p[1]) + " " + number(p[2]) + " ";
       }
       const Eigen::Vector3d angles =

@@ -2,10 +2,14 @@
  * @file BVHWriter.h
  * @brief Write a skeletal animation as a Biovision hierarchy (BVH) file.
  *
- * The hierarchy is written as it is (joint names, parents, depth-first order), every joint
- * with a parent at its OFFSET: its translation at frame 0. Roots, and joints whose translation
- * changes over the frames, get position channels (Xposition Yposition Zposition, the
- * translation minus the OFFSET); every joint that is not an end site gets three rotation
+ * The hierarchy is written as it is (joint names, parents, depth-first order; a BVH file holds
+ * one hierarchy, so a skeleton with several roots is refused), every joint with a parent at its
+ * OFFSET: its translation at frame 0. Roots, and joints whose translation changes over the
+ * frames, get position channels (Xposition Yposition Zposition, the whole translation) at
+ * OFFSET 0, where readers that add the channels to the OFFSET and readers that take them
+ * instead of it (assimp: the module's reader) agree. A name is written as one token: white
+ * space, control characters and braces become '_' (readers split names there), an empty name
+ * joint_<index>. Every joint that is not an end site gets three rotation
  * channels in `rotationOrder` (e.g. "ZYX": R = Rz(a) Ry(b) Rx(c), the BVH convention of
  * multiplying in channel order), end sites an End Site block. The Euler angles of each frame
  * are the solution nearest to the previous frame's (of the two Tait-Bryan solutions, unwrapped

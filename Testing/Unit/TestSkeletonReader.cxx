@@ -1,6 +1,7 @@
 // vtkSkeletonAnimationReader on the CMU and boxing BVH files of assimp-testmodels: the forward
 // kinematics of what it reads against a direct evaluation of the BVH text (Testing/Benchmarks/
-// BVHOracle.h, an independent parser kept as the oracle of this test only), TIME_STEPS through the pipeline, and unreadable files.
+// BVHOracle.h, an independent parser kept as the oracle of this test only), TIME_STEPS through the
+// pipeline, and unreadable files.
 #include "BVHOracle.h"
 #include "VtkTestHelpers.h"
 
@@ -18,6 +19,8 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
@@ -277,6 +280,63 @@ TEST_P(SkeletonReaderOnClips, WrittenBVHReproducesTheMotion)
     std::filesystem::remove(out);
   }
   EXPECT_EQ(w.errors->Count, 0);
+}
+
+TEST(SkeletonReader, WrittenJointsWithPositionChannelsReadBackByEveryConvention)
+{
+  // A joint below the root whose translation changes (position channels) was written as
+  // "translation minus OFFSET", which the module's own reader (assimp: the channels replace the
+  // OFFSET) read back off by that OFFSET: a codec round trip reported within 1 % read 77 % off.
+  // Written at OFFSET 0 with the whole translation, both readings agree; a name with a space
+  // is written as one token; a second root is refused.
+  lct::SkeletalAnimation a;
+  a.joints = { { "root", -1, false }, { "My Spine", 0, false }, { "tip", 1, true } };
+  a.frames = 3;
+  a.frameTime = 0.1;
+  for (int f = 0; f < a.frames; ++f)
+  {
+    Eigen::Matrix4d root = Eigen::Matrix4d::Identity(), spine = Eigen::Matrix4d::Identity();
+    root.topRightCorner<3, 1>() = Eigen::Vector3d(0.1 * f, 1.0, 0.0);
+    spine.topLeftCorner<3, 3>() = Eigen::AngleAxisd(0.3 * f, Eigen::Vector3d::UnitZ()).matrix();
+    spine.topRightCorner<3, 1>() = Eigen::Vector3d(0.5, -1.0 + 0.2 * f, 2.0);
+    Eigen::Matrix4d tip = Eigen::Matrix4d::Identity();
+    tip(1, 3) = 0.7;
+    a.locals.insert(a.locals.end(), { root, spine, tip });
+  }
+  std::ostringstream text;
+  std::string why;
+  ASSERT_TRUE(lct::writeBVH(a, "ZXY", text, &why)) << why;
+  EXPECT_NE(text.str().find("JOINT My_Spine"), std::string::npos) << text.str();
+  const std::string path = temporaryFile("position-channels.bvh", text.str());
+  // The module's reader (assimp) and the independent parser (channels added to the OFFSET).
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  const lct::SkeletalAnimation* read = w.reader->GetAnimation();
+  ASSERT_NE(read, nullptr) << w.errors->Last;
+  ASSERT_EQ(read->jointCount(), 3);
+  ASSERT_EQ(read->frames, 3);
+  const auto oracle = lct_bench::LoadBVH(path);
+  ASSERT_TRUE(oracle.Ok()) << oracle.error;
+  for (int f = 0; f < a.frames; ++f)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      EXPECT_LT((read->local(f, j) - a.local(f, j)).norm(), 1e-6)
+        << "frame " << f << " joint " << j;
+      const lct_bench::Matrix4 l =
+        lct_bench::LocalTransform(oracle.motion, j, oracle.motion.Frame(f));
+      const Eigen::Matrix4d parsed =
+        Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(l.data());
+      EXPECT_LT((parsed - a.local(f, j)).norm(), 1e-8) << "frame " << f << " joint " << j;
+    }
+  }
+  std::filesystem::remove(path);
+  // Two roots: one file cannot hold them.
+  a.joints[1].parent = -1;
+  std::ostringstream twoRoots;
+  EXPECT_FALSE(lct::writeBVH(a, "ZXY", twoRoots, &why));
+  EXPECT_NE(why.find("one ROOT"), std::string::npos) << why;
 }
 
 TEST(SkeletonReader, WritingRefusesWhatBVHCannotHold)
