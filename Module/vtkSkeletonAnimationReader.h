@@ -93,7 +93,8 @@ public:
    * offsets and frame time, rotation channels in `rotationOrder` (a permutation of "XYZ", e.g.
    * "ZYX"), position channels for the root and any joint that moves. Written to a temporary
    * name and renamed, so a failure leaves no file. Returns 0 with an error before the file was
-   * read, for a bad order, for transforms with scale or shear, or when writing fails.
+   * read, for a bad order, for transforms with scale or shear, for a skeleton with several roots
+   * (a BVH file holds one hierarchy), or when writing fails.
    */
   int WriteBVH(const char* fileName, const char* rotationOrder);
 
