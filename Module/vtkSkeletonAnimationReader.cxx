@@ -19,6 +19,7 @@
 #include "AssimpSampling.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <Eigen/Geometry>
@@ -127,7 +128,7 @@ bool vtkSkeletonAnimationReader::Load()
   const std::string file = this->FileName;
   Assimp::Importer importer;
   // No post-processing: the node hierarchy and the keys as the file has them.
-  const aiScene* scene = importer.ReadFile(file, 0);
+  const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode)
   {
     vtkErrorMacro(<< file << ": not readable as an animation file: " << importer.GetErrorString());

@@ -193,7 +193,7 @@ bool vtkSkinnedMeshReaderLCT::Load()
   }
   const std::string file = this->FileName;
   in.Importer.reset(new Assimp::Importer);
-  const aiScene* scene = in.Importer->ReadFile(file, aiProcess_Triangulate);
+  const aiScene* scene = in.Importer->ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
   const auto fail = [&](const std::string& why) {
     vtkErrorMacro(<< file << ": " << why);
     in = Internals();

@@ -18,10 +18,11 @@
  * again with another t moves the probes (the deformer re-executes), so stepping t through
  * [GetStartTime(), GetEndTime()] animates the character with any blend mode.
  *
- * Errors (a missing, unreadable or mesh-less file, a bone naming no node, a NaN vertex or
- * weight, more than 10^7 vertices, 65536 bones or 32 influences per vertex) are reported with a
- * vtkErrorMacro naming the file; the request fails and the output is empty. Queries return 0
- * (null for names) before a successful update or for indices out of range.
+ * Errors (a missing, unreadable or mesh-less file, one whose structure assimp's validation
+ * refuses, a NaN vertex or weight, more than 10^7 vertices, 65536 bones or 32 influences per
+ * vertex) are reported with a vtkErrorMacro naming the file; the request fails and the output is
+ * empty. A bone naming no node of the file is a warning: its vertices stay in the bind pose.
+ * Queries return 0 (null for names) before a successful update or for indices out of range.
  *
  * @sa vtkProbeDeformerLCT vtkSkeletonAnimationReader
  */
