@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -68,20 +69,48 @@ void vtkMotionCodecLCT::ResetFigures()
 //------------------------------------------------------------------------------
 int vtkMotionCodecLCT::Compress(vtkSkeletonAnimationReader* reader, const char* fileName)
 {
+  try
+  {
+    return this->CompressOrThrow(reader, fileName);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Compress: out of memory for this animation; nothing written.");
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMotionCodecLCT::CompressOrThrow(vtkSkeletonAnimationReader* reader, const char* fileName)
+{
   this->ResetFigures();
   const lct::SkeletalAnimation* animation = reader ? reader->GetAnimation() : nullptr;
   if (!animation || !fileName || !*fileName)
   {
     vtkErrorMacro(<< "Compress: "
-                  << (!reader ? "no reader"
-                       : !animation ? "the reader has no animation (UpdateInformation() first)"
-                                    : "no file name")
+                  << (!reader         ? "no reader"
+                         : !animation ? "the reader has no animation (UpdateInformation() first)"
+                                      : "no file name")
                   << "; nothing written.");
     return 0;
   }
   const double height = lct::restPoseHeight(*animation);
-  const double tolerance = this->Tolerance > 0.0 ? this->Tolerance : this->RelativeTolerance * height;
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || !std::isfinite(this->Tolerance))
+  if (!std::isfinite(this->Tolerance))
+  {
+    vtkErrorMacro(<< "Compress: Tolerance is " << this->Tolerance
+                  << ": it must be finite (0 or less uses RelativeTolerance); nothing written.");
+    return 0;
+  }
+  const std::string order = this->RotationOrder ? this->RotationOrder : "ZYX";
+  if (!lct::isRotationOrder(order))
+  {
+    vtkErrorMacro(<< "Compress: the rotation order \"" << order
+                  << "\" is not a permutation of XYZ; nothing written.");
+    return 0;
+  }
+  const double tolerance =
+    this->Tolerance > 0.0 ? this->Tolerance : this->RelativeTolerance * height;
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
   {
     vtkErrorMacro(<< "Compress: the tolerance " << tolerance
                   << " is not positive and finite (Tolerance " << this->Tolerance
@@ -90,7 +119,7 @@ int vtkMotionCodecLCT::Compress(vtkSkeletonAnimationReader* reader, const char* 
     return 0;
   }
   lct::MotionMetadata metadata;
-  metadata.rotationOrder = this->RotationOrder ? this->RotationOrder : "ZYX";
+  metadata.rotationOrder = order;
   metadata.height = height;
   int channels = 0;
   for (const lct::SkeletonJoint& joint : animation->joints)
@@ -127,6 +156,21 @@ int vtkMotionCodecLCT::Compress(vtkSkeletonAnimationReader* reader, const char* 
 
 //------------------------------------------------------------------------------
 int vtkMotionCodecLCT::Decompress(const char* lctmFile, const char* bvhFile)
+{
+  try
+  {
+    return this->DecompressOrThrow(lctmFile, bvhFile);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Decompress: out of memory for the animation " << lctmFile
+                  << " describes; nothing written.");
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMotionCodecLCT::DecompressOrThrow(const char* lctmFile, const char* bvhFile)
 {
   if (!lctmFile || !*lctmFile || !bvhFile || !*bvhFile)
   {
@@ -166,7 +210,8 @@ void vtkMotionCodecLCT::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
-  os << indent << "RotationOrder: " << (this->RotationOrder ? this->RotationOrder : "(null)") << "\n";
+  os << indent << "RotationOrder: " << (this->RotationOrder ? this->RotationOrder : "(null)")
+     << "\n";
   os << indent << "CompressedBytes: " << this->CompressedBytes << "\n";
   os << indent << "CompressionFactor: " << this->CompressionFactor << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";

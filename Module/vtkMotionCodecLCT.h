@@ -65,12 +65,15 @@ public:
 
   /**
    * Compresses the animation `reader` read (UpdateInformation() first) into `fileName`.
-   * Returns 1 on success.
+   * Returns 1 on success, 0 with an error (nothing written) for a bad setting, an animation
+   * that cannot be held within the tolerance, or when memory runs out.
    */
   int Compress(vtkSkeletonAnimationReader* reader, const char* fileName);
 
   /**
-   * Decodes `lctmFile` and writes it as BVH to `bvhFile`. Returns 1 on success.
+   * Decodes `lctmFile` and writes it as BVH to `bvhFile`. Returns 1 on success, 0 with an
+   * error (nothing written) for a file that is not a valid .lctm, a bad rotation order, or when
+   * memory runs out (a small file can describe up to 3e7 transforms, ~4 GB decoded).
    */
   int Decompress(const char* lctmFile, const char* bvhFile);
 
@@ -91,6 +94,9 @@ protected:
   ~vtkMotionCodecLCT() override;
 
 private:
+  /// The bodies of Compress and Decompress, which turn std::bad_alloc into an error.
+  int CompressOrThrow(vtkSkeletonAnimationReader* reader, const char* fileName);
+  int DecompressOrThrow(const char* lctmFile, const char* bvhFile);
   vtkMotionCodecLCT(const vtkMotionCodecLCT&) = delete;
   void operator=(const vtkMotionCodecLCT&) = delete;
 

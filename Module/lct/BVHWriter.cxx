@@ -76,15 +76,11 @@ Eigen::Vector3d eulerAnglesNear(
   return (a - previous).squaredNorm() <= (b - previous).squaredNorm() ? a : b;
 }
 
-bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrder,
-  std::ostream& out, std::string* why)
+namespace
 {
-  std::string reason;
-  if (!isConsistent(animation, &reason))
-  {
-    return fail(why, reason);
-  }
-  int order[3];
+/// The axes (0, 1, 2 for x, y, z) of a permutation of "XYZ" (either case), or false.
+bool rotationAxes(const std::string& rotationOrder, int (&order)[3])
+{
   bool seen[3] = { false, false, false };
   bool valid = rotationOrder.size() == 3;
   for (int i = 0; valid && i < 3; ++i)
@@ -98,7 +94,26 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       order[i] = axis;
     }
   }
-  if (!valid)
+  return valid;
+}
+} // namespace
+
+bool isRotationOrder(const std::string& order)
+{
+  int axes[3];
+  return rotationAxes(order, axes);
+}
+
+bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrder,
+  std::ostream& out, std::string* why)
+{
+  std::string reason;
+  if (!isConsistent(animation, &reason))
+  {
+    return fail(why, reason);
+  }
+  int order[3];
+  if (!rotationAxes(rotationOrder, order))
   {
     return fail(why, "the rotation order \"" + rotationOrder + "\" is not a permutation of XYZ");
   }

@@ -32,6 +32,9 @@
 namespace lct
 {
 
+/// Whether `order` is a permutation of "XYZ" (either case): a rotation order writeBVH takes.
+VTKLCT_EXPORT bool isRotationOrder(const std::string& order);
+
 /// Writes `animation` to `out`. Returns false, with the reason in `why`, for an inconsistent
 /// animation, a rotation order that is not a permutation of "XYZ", or a local transform that
 /// is not rigid; `out` may then hold a partial file (write to a temporary and rename).

@@ -70,6 +70,18 @@ class MotionCodecTest(unittest.TestCase):
         self.assertIn("not positive and finite", errors.messages[-1])
         self.assertFalse(os.path.exists(target))
         self.assertEqual(codec.GetCompressedBytes(), 0)
+        # A NaN Tolerance is named as such (it blamed the relative fallback's value), and a
+        # rotation order Decompress would refuse is refused before anything is written.
+        codec.SetRelativeTolerance(0.01)
+        codec.SetTolerance(float("nan"))
+        self.assertEqual(codec.Compress(read(CLIP), target), 0)
+        self.assertIn("Tolerance is nan", errors.messages[-1])
+        codec.SetTolerance(0.0)
+        codec.SetRotationOrder("ABC")
+        self.assertEqual(codec.Compress(read(CLIP), target), 0)
+        self.assertIn("not a permutation of XYZ", errors.messages[-1])
+        self.assertFalse(os.path.exists(target))
+        codec.SetRotationOrder(None)
         corrupted = os.path.join(OUT, "codec-python-corrupted.lctm")
         with open(corrupted, "wb") as f:
             f.write(b"LCTM\x01\x00\x00\x00" + bytes(40))
