@@ -25,8 +25,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -172,7 +174,21 @@ bool vtkSkeletonAnimationReader::Load()
                   << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
     return false;
   }
-  // Frame times: the key times of the channel with the most keys, in seconds.
+  // Frame times: the key times of the channel with the most keys, in seconds. assimp gives 0
+  // ticks per second for a format that has none (then 25, assimp's own default), but a BVH file
+  // states its Frame Time (assimp: 1 / Frame Time ticks per second): one that is not positive
+  // and finite (0, negative, NaN, beyond float) is an error, not 1/25 s.
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool statesFrameTime = extension == ".bvh";
+  if (statesFrameTime &&
+    !(animation.mTicksPerSecond > 0.0 && std::isfinite(animation.mTicksPerSecond)))
+  {
+    vtkErrorMacro(<< file << ": the Frame Time is not a positive number (assimp read "
+                  << animation.mTicksPerSecond << " frames per second).");
+    return false;
+  }
   const double ticksPerSecond = animation.mTicksPerSecond > 0.0 ? animation.mTicksPerSecond : 25.0;
   std::vector<double> ticks(frames);
   for (unsigned f = 0; f < frames; ++f)
@@ -194,6 +210,13 @@ bool vtkSkeletonAnimationReader::Load()
   a.frames = static_cast<int>(frames);
   a.frameTime = frames > 1 ? (ticks.back() - ticks.front()) / (frames - 1) / ticksPerSecond
                            : 1.0 / ticksPerSecond;
+  if (!(a.frameTime > 0.0) || !std::isfinite(a.frameTime))
+  {
+    vtkErrorMacro(<< file << ": the frame time " << a.frameTime << " s is not positive and finite ("
+                  << ticksPerSecond << " ticks per second).");
+    in = Internals();
+    return false;
+  }
   for (const Node& n : nodes)
   {
     const bool animated = channels.count(n.node->mName.C_Str()) > 0;

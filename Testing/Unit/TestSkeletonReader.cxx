@@ -282,6 +282,29 @@ TEST_P(SkeletonReaderOnClips, WrittenBVHReproducesTheMotion)
   EXPECT_EQ(w.errors->Count, 0);
 }
 
+TEST(SkeletonReader, AFrameTimeThatIsNotPositiveIsAnError)
+{
+  // assimp reads a BVH Frame Time as 1 / Frame Time ticks per second; the reader took a
+  // non-positive rate for "unknown" and used 1/25 s (negative, NaN, beyond float), or kept
+  // Frame Time 0 with every TIME_STEP 0.
+  for (const char* frameTime : { "-0.03", "0", "nan", "1e300" })
+  {
+    const std::string text = std::string("HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0 0\n"
+                                         "\tCHANNELS 6 Xposition Yposition Zposition Zrotation "
+                                         "Yrotation Xrotation\n\tEnd Site\n\t{\n\t\tOFFSET 0 3 "
+                                         "0\n\t}\n}\nMOTION\nFrames: 2\nFrame Time: ") +
+      frameTime + "\n0 1 0 10 20 30\n0 1 0 11 21 31\n";
+    const std::string path = temporaryFile("frame-time.bvh", text);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr) << frameTime;
+    EXPECT_NE(w.errors->Last.find("not a positive number"), std::string::npos)
+      << frameTime << ": " << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+}
+
 TEST(SkeletonReader, WrittenJointsWithPositionChannelsReadBackByEveryConvention)
 {
   // A joint below the root whose translation changes (position channels) was written as
