@@ -414,7 +414,10 @@ int vtkProbeDeformerLCT::RequestData(
         return fail();
       }
     }
-    relative[i] = current * lct::inverseAffine(rest);
+    // A probe at rest (current == rest, e.g. one matrix for both) is exactly the identity:
+    // current * rest^-1 rounds to within an ulp of it, which moved points by ~1e-15.
+    relative[i] = current == rest ? Eigen::Matrix4d::Identity()
+                                  : Eigen::Matrix4d(current * lct::inverseAffine(rest));
     centres[i] = rest.topRightCorner<3, 1>();
     radii[i] = p.Radius;
     if (!references.empty())

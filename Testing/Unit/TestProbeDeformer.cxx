@@ -978,6 +978,49 @@ TEST(ProbeDeformer, LinearModeMatchesVtkWeightedTransformFilter)
   }
 }
 
+TEST(ProbeDeformer, ProbesAtRestThroughTheFilterLeaveEveryPointBitForBit)
+{
+  // Rest matrices that turn and move (not only translations): current * rest^-1 rounded to an
+  // ulp of I and moved most points by ~1e-15; a probe whose current matrix equals its rest one
+  // (the same object, or an equal one) is now taken as I.
+  RandomTransforms r(23);
+  const Scene s = randomScene(r, TransformClass::Rigid, 3, 200);
+  vtkSmartPointer<vtkPolyData> pd = toPolyData(s);
+  for (int mode = vtkProbeDeformerLCT::POLAR; mode <= vtkProbeDeformerLCT::DUAL_QUATERNION; ++mode)
+  {
+    vtkNew<vtkProbeDeformerLCT> deformer;
+    deformer->SetInputData(pd);
+    ASSERT_EQ(deformer->SetBlendMode(mode), 1);
+    std::vector<vtkSmartPointer<vtkMatrix4x4>> matrices;
+    for (int k = 0; k < 3; ++k)
+    {
+      auto rest = vtkSmartPointer<vtkMatrix4x4>::New();
+      const Eigen::Matrix4d m = r.Affine(TransformClass::Rigid); // turned and moved
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int j = 0; j < 4; ++j)
+        {
+          rest->SetElement(i, j, m(i, j));
+        }
+      }
+      auto equal = vtkSmartPointer<vtkMatrix4x4>::New();
+      equal->DeepCopy(rest);
+      ASSERT_GE(deformer->AddProbe(k == 0 ? rest.Get() : equal.Get(), rest), 0);
+      matrices.insert(matrices.end(), { rest, equal });
+    }
+    ASSERT_EQ(deformer->GetExecutive()->Update(), 1);
+    auto* out = vtkPointSet::SafeDownCast(deformer->GetOutputDataObject(0))->GetPoints();
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      pd->GetPoint(i, a);
+      out->GetPoint(i, b);
+      ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2])
+        << "mode " << mode << " point " << i;
+    }
+  }
+}
+
 TEST(ProbeDeformer, MultithreadedResultEqualsSerialResult)
 {
   RandomTransforms r(19);
