@@ -659,6 +659,20 @@ int vtkProbeDeformerLCT::RequestData(
     {
       vtkSMPTools::For(0, points, run);
     }
+    if (!failure.ok())
+    {
+      // A NaN or Inf input point fails whichever check it meets first (weights from its
+      // distances, the blend, the result): name it, not that check.
+      double p[3];
+      inPoints->GetPoint(failure.point, p);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        vtkErrorMacro(<< "point " << failure.point << " is "
+                      << formatVector(Eigen::Vector3d(p[0], p[1], p[2]))
+                      << ": an input point must be finite.");
+        return fail();
+      }
+    }
     if (!failure.ok() && weightArray &&
       (failure.status == lct::Status::NonFinite || failure.status == lct::Status::InvalidArgument))
     {
@@ -682,12 +696,16 @@ int vtkProbeDeformerLCT::RequestData(
     {
       double p[3];
       inPoints->GetPoint(failure.point, p);
+      // NumericalFailure here is the blend's own refusal, not the eigensolver defect that
+      // lct::describe names for it.
       vtkErrorMacro(<< "point " << failure.point << " at "
                     << formatVector(Eigen::Vector3d(p[0], p[1], p[2])) << " cannot be deformed in "
-                    << this->GetBlendModeAsString() << " mode: " << lct::describe(failure.status)
+                    << this->GetBlendModeAsString() << " mode: "
                     << (failure.status == lct::Status::NumericalFailure
-                           ? " (its weighted rotations cancel, or with stretched probes its "
-                             "weights sum to 0: NormalizationToLinear keeps them from that)"
+                           ? "its weighted rotations cancel, or with stretched probes its weights "
+                             "sum to 0 (NormalizationToLinear keeps them from that)"
+                           : lct::describe(failure.status))
+                    << (failure.status == lct::Status::NumericalFailure ? ""
                            : failure.status == lct::Status::InaccurateResult
                            ? " (its weights wind the blended turn beyond 1e9 radians: "
                              "NormalizationToLinear keeps them from that)"

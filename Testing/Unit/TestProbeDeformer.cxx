@@ -1378,12 +1378,25 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
   {
     vtkNew<vtkPolyData> far;
     vtkNew<vtkPoints> farPoints;
+    farPoints->SetDataTypeToDouble(); // (a float point of 1e300 is Inf)
     farPoints->InsertNextPoint(1e300, 0, 0);
     far->SetPoints(farPoints);
     vtkNew<vtkProbeDeformerLCT> g;
     g->AddProbe(huge);
     g->SetInputData(far);
     expectRefused(g, "cannot be deformed", 0);
+    // A NaN or Inf input point is named as such, whichever check it fails first (it read
+    // "invalid argument (count, index or size)" or "out of the range of double precision").
+    for (const int mode : { vtkProbeDeformerLCT::INVERSE_DISTANCE, vtkProbeDeformerLCT::CUTOFF })
+    {
+      ASSERT_EQ(g->SetWeightMode(mode), 1);
+      farPoints->SetPoint(0, std::nan(""), 0, 0);
+      farPoints->Modified();
+      expectRefused(g, "point 0 is (nan, 0, 0): an input point must be finite", 0);
+      farPoints->SetPoint(0, 0, std::numeric_limits<double>::infinity(), 0);
+      farPoints->Modified();
+      expectRefused(g, "an input point must be finite", 0);
+    }
   }
   // A stretch of 1e160 at the point itself: its normal stays a unit normal, and a vector array
   // it would stretch beyond double is refused, not written as Inf.
