@@ -339,6 +339,12 @@ int vtkTransformSequencePCA::GetExplainedVariance(vtkDoubleArray* fractions)
 //------------------------------------------------------------------------------
 double vtkTransformSequencePCA::GetExplainedFraction(int components)
 {
+  if (components < 0)
+  {
+    vtkErrorMacro(<< "GetExplainedFraction: " << components
+                  << " components: the count must be 0 or more.");
+    return 0.0;
+  }
   return this->Analysed("GetExplainedFraction", this)
     ? this->Internal->Pca.explainedFraction(components)
     : 0.0;
@@ -358,6 +364,12 @@ int vtkTransformSequencePCA::GetReconstructedTransform(
   {
     vtkErrorMacro(<< caller << ": frame " << frame << ", channel " << channel << " is outside the "
                   << in.Frames() << " x " << in.Channels << " input.");
+    return 0;
+  }
+  if (components < 0)
+  {
+    vtkErrorMacro(<< caller << ": " << components
+                  << " components: the count must be 0 or more; result unchanged.");
     return 0;
   }
   const int s = in.Slot[static_cast<std::size_t>(channel)];

@@ -131,15 +131,15 @@ public:
   int GetExplainedVariance(vtkDoubleArray* fractions);
 
   /**
-   * The fraction of the variance the first r components explain.
+   * The fraction of the variance the first r components explain (0 with an error for r < 0).
    */
   double GetExplainedFraction(int components);
 
   /**
    * The transform of `channel` at `frame` reconstructed from the first `components`
    * components (clamped to GetNumberOfComponents(); 0: the channel's mean). The root channel
-   * comes back as it was given. Returns 0 with an error for indices out of range or before
-   * Compute().
+   * comes back as it was given. Returns 0 with an error for indices out of range, a negative
+   * count or before Compute().
    */
   int GetReconstructedTransform(int frame, int channel, int components, vtkMatrix4x4* result);
 

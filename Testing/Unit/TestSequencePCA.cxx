@@ -353,6 +353,11 @@ TEST(SequencePCA, BadInputIsRefused)
   ASSERT_EQ(w.pca->Compute(), 1);
   refused(w.pca->GetReconstructedTransform(2, 0, 1, m), "frame 2, channel 0 is outside");
   refused(w.pca->GetReconstructedTransform(0, 3, 1, m), "channel 3 is outside");
+  // A negative count was taken as 0 (the mean), return 1.
+  refused(w.pca->GetReconstructedTransform(0, 1, -3, m), "-3 components");
+  EXPECT_EQ(w.pca->GetExplainedFraction(-1), 0.0);
+  EXPECT_EQ(w.errors->Count, ++errors);
+  EXPECT_NE(w.errors->Last.find("-1 components"), std::string::npos) << w.errors->Last;
   refused(w.pca->GetEigenMotion(0, 0, std::numeric_limits<double>::infinity(), m), "s = inf");
   refused(w.pca->GetScores(-1, a), "frame -1 is outside [0, 2)");
   // Queries after the input changed.
