@@ -324,7 +324,12 @@ int vtkLogTransform::LinearCombination(
 {
   if (!transforms || !weights || !result)
   {
-    vtkGenericWarningMacro(<< "vtkLogTransform::LinearCombination: null argument.");
+    // An error (on `result` when there is one, so its observers see it), not a warning.
+    vtkErrorWithObjectMacro(result, << "LinearCombination: null "
+                                    << (!transforms   ? "transforms"
+                                           : !weights ? "weights"
+                                                      : "result")
+                                    << "; nothing changed.");
     return 0;
   }
   const int count = transforms->GetNumberOfItems();

@@ -17,6 +17,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCollection.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -1172,4 +1173,22 @@ TEST(Robustness, SettersRefuseValuesOutOfRangeInsteadOfClampingThem)
   expectRefusedOutsideRange(pca.Get(), &vtkTransformSequencePCA::SetMaximumNumberOfComponents,
     &vtkTransformSequencePCA::GetMaximumNumberOfComponents, { -1 }, 4,
     "SetMaximumNumberOfComponents");
+}
+
+TEST(Robustness, LinearCombinationWithANullArgumentIsAnError)
+{
+  // It was a warning (vtkGenericWarningMacro), which error observers and scripts that watch
+  // for errors missed.
+  vtkNew<vtkLogTransform> result;
+  vtkNew<ErrorCounter> errors;
+  result->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCollection> transforms;
+  vtkNew<vtkDoubleArray> weights;
+  const vtkMTimeType mtime = result->GetMTime();
+  EXPECT_EQ(vtkLogTransform::LinearCombination(transforms, nullptr, result), 0);
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(contains(errors->Last, "null weights")) << errors->Last;
+  EXPECT_EQ(vtkLogTransform::LinearCombination(nullptr, weights, result), 0);
+  EXPECT_TRUE(contains(errors->Last, "null transforms")) << errors->Last;
+  EXPECT_EQ(result->GetMTime(), mtime);
 }
