@@ -661,57 +661,53 @@ int vtkProbeDeformerLCT::RequestData(
     }
     if (!failure.ok())
     {
-      // A NaN or Inf input point fails whichever check it meets first (weights from its
-      // distances, the blend, the result): name it, not that check.
       double p[3];
       inPoints->GetPoint(failure.point, p);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      const Eigen::Vector3d point(p[0], p[1], p[2]);
+      if (!point.allFinite())
       {
-        vtkErrorMacro(<< "point " << failure.point << " is "
-                      << formatVector(Eigen::Vector3d(p[0], p[1], p[2]))
+        // A NaN or Inf input point fails whichever check it meets first (weights from its
+        // distances, the blend, the result): name it, not that check.
+        vtkErrorMacro(<< "point " << failure.point << " is " << formatVector(point)
                       << ": an input point must be finite.");
-        return fail();
       }
-    }
-    if (!failure.ok() && weightArray &&
-      (failure.status == lct::Status::NonFinite || failure.status == lct::Status::InvalidArgument))
-    {
-      std::string values;
-      for (int k = 0; k < source.slots; ++k)
+      else if (weightArray &&
+        (failure.status == lct::Status::NonFinite ||
+          failure.status == lct::Status::InvalidArgument))
       {
-        values += (k ? ", " : "") + lct::formatNumber(weightArray->GetComponent(failure.point, k));
-        if (source.indices)
+        std::string values;
+        for (int k = 0; k < source.slots; ++k)
         {
-          values += " (probe " + std::to_string(indices[failure.point * source.slots + k]) + ")";
+          values +=
+            (k ? ", " : "") + lct::formatNumber(weightArray->GetComponent(failure.point, k));
+          if (source.indices)
+          {
+            values += " (probe " + std::to_string(indices[failure.point * source.slots + k]) + ")";
+          }
         }
+        vtkErrorMacro(<< "point " << failure.point << " has weights " << values << ": "
+                      << (failure.status == lct::Status::NonFinite
+                             ? "NaN or Inf"
+                             : "a sum the normalisation cannot divide by (LINEAR needs a "
+                               "positive sum where any weight is not 0)"));
       }
-      vtkErrorMacro(<< "point " << failure.point << " has weights " << values << ": "
-                    << (failure.status == lct::Status::NonFinite
-                           ? "NaN or Inf"
-                           : "a sum the normalisation cannot divide by (LINEAR needs a positive "
-                             "sum where any weight is not 0)"));
-      return fail();
-    }
-    if (!failure.ok())
-    {
-      double p[3];
-      inPoints->GetPoint(failure.point, p);
-      // NumericalFailure here is the blend's own refusal, not the eigensolver defect that
-      // lct::describe names for it.
-      vtkErrorMacro(<< "point " << failure.point << " at "
-                    << formatVector(Eigen::Vector3d(p[0], p[1], p[2])) << " cannot be deformed in "
-                    << this->GetBlendModeAsString() << " mode: "
-                    << (failure.status == lct::Status::NumericalFailure
-                           ? "its weighted rotations cancel, or with stretched probes its weights "
-                             "sum to 0 (NormalizationToLinear keeps them from that)"
-                           : lct::describe(failure.status))
-                    << (failure.status == lct::Status::NumericalFailure ? ""
-                           : failure.status == lct::Status::InaccurateResult
-                           ? " (its weights wind the blended turn beyond 1e9 radians: "
-                             "NormalizationToLinear keeps them from that)"
-                           : failure.status == lct::Status::OutOfRange && !carried.empty()
-                           ? " (its position, or a vector array carried with it)"
-                           : ""));
+      else
+      {
+        // NumericalFailure here is the blend's own refusal, not the eigensolver defect that
+        // lct::describe names for it.
+        vtkErrorMacro(<< "point " << failure.point << " at " << formatVector(point)
+                      << " cannot be deformed in " << this->GetBlendModeAsString() << " mode: "
+                      << (failure.status == lct::Status::NumericalFailure
+                             ? "its weighted rotations cancel, or with stretched probes its "
+                               "weights sum to 0 (NormalizationToLinear keeps them from that)"
+                             : lct::describe(failure.status))
+                      << (failure.status == lct::Status::InaccurateResult
+                             ? " (its weights wind the blended turn beyond 1e9 radians: "
+                               "NormalizationToLinear keeps them from that)"
+                             : failure.status == lct::Status::OutOfRange && !carried.empty()
+                             ? " (its position, or a vector array carried with it)"
+                             : ""));
+      }
       return fail();
     }
     output->SetPoints(outPoints);
