@@ -521,11 +521,10 @@ int vtkCameraInterpolatorLCT::RemoveCamera(double t)
 //------------------------------------------------------------------------------
 int vtkCameraInterpolatorLCT::SetInterpolationType(int type)
 {
-  if (type < INTERPOLATION_TYPE_LINEAR || type > INTERPOLATION_TYPE_SUBDIVISION)
+  if (!vtkLCTCheckedSet::InRange(this, "InterpolationType", this->InterpolationType, type,
+        static_cast<int>(INTERPOLATION_TYPE_LINEAR),
+        static_cast<int>(INTERPOLATION_TYPE_SUBDIVISION)))
   {
-    vtkErrorMacro(<< "SetInterpolationType(" << type << "): outside [" << INTERPOLATION_TYPE_LINEAR
-                  << ", " << INTERPOLATION_TYPE_SUBDIVISION << "]; InterpolationType stays "
-                  << this->InterpolationType << ".");
     return 0;
   }
   if (type == this->InterpolationType)

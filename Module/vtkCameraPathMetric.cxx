@@ -115,23 +115,26 @@ int vtkCameraPathMetric::MeasureSegments(
     return 0;
   }
   // The times at which the path passes the keys: their own, or (ConstantSpeed) passTimes.
-  std::vector<double> pass;
-  for (const auto& key : keys)
+  if (passTimes && passTimes->size() != keys.size())
   {
-    pass.push_back(key.first);
+    vtkErrorMacro(<< caller << ": the path passes " << passTimes->size()
+                  << " keys (ConstantSpeed moves the times at which it passes them) and there "
+                  << "are " << keys.size() << " key cameras: give the metric the path's keys "
+                  << "(AddKeyCamera) so that each key is compared where the path passes it; "
+                  << "results unchanged.");
+    return 0;
   }
+  std::vector<double> pass;
   if (passTimes)
   {
-    if (passTimes->size() != keys.size())
-    {
-      vtkErrorMacro(<< caller << ": the path passes " << passTimes->size()
-                    << " keys (ConstantSpeed moves the times at which it passes them) and there "
-                    << "are " << keys.size() << " key cameras: give the metric the path's keys "
-                    << "(AddKeyCamera) so that each key is compared where the path passes it; "
-                    << "results unchanged.");
-      return 0;
-    }
     pass = *passTimes;
+  }
+  else
+  {
+    for (const auto& key : keys)
+    {
+      pass.push_back(key.first);
+    }
   }
   vtkNew<vtkCamera> camera;
   int k = 0;

@@ -1,5 +1,7 @@
 #include "vtkTransformInterpolatorLCT.h"
 
+#include "vtkLCTCheckedSet.h"
+
 #include "lct/Affine.h"
 #include "lct/Curves.h"
 #include "lct/Format.h"
@@ -790,11 +792,9 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
 //------------------------------------------------------------------------------
 int vtkTransformInterpolatorLCT::SetInterpolationType(int type)
 {
-  if (type < INTERPOLATION_TYPE_LINEAR || type > INTERPOLATION_TYPE_BEZIER)
+  if (!vtkLCTCheckedSet::InRange(this, "InterpolationType", this->InterpolationType, type,
+        static_cast<int>(INTERPOLATION_TYPE_LINEAR), static_cast<int>(INTERPOLATION_TYPE_BEZIER)))
   {
-    vtkErrorMacro(<< "SetInterpolationType(" << type << "): outside [" << INTERPOLATION_TYPE_LINEAR
-                  << ", " << INTERPOLATION_TYPE_BEZIER << "]; InterpolationType stays "
-                  << this->InterpolationType << ".");
     return 0;
   }
   if (type == this->InterpolationType)
