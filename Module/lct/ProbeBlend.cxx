@@ -209,8 +209,7 @@ Status dualQuaternionBlend(const ProbeBlendSet& set, const double* weights,
   // The blend depends on the ratios of the weights only, but |sum w q|^2 leaves double's range
   // for weights beyond 2^+-480 (possible without normalisation): those are scaled by a power of
   // two, which changes no bit of the blend.
-  const int exponent =
-    heaviest > 0x1p-480 && heaviest < 0x1p480 ? 0 : -std::ilogb(heaviest);
+  const int exponent = heaviest > 0x1p-480 && heaviest < 0x1p480 ? 0 : -std::ilogb(heaviest);
   // Kavan et al.'s two phases, A_k = [U_k | t'_k] T(c_k) S_k T(-c_k): the stretches about their
   // probes' centres blended linearly, then the rigid parts by DLB. Both commute with translating
   // the scene, so no per-point centre is needed.
@@ -538,7 +537,9 @@ void distanceWeights(
     {
       const double ratio = nearest == 0.0 ? (w[i] == 0.0 ? 1.0 : 0.0) : nearest / w[i];
       w[i] = source.radii[i] *
-        (squared ? ratio * ratio : unit ? ratio : std::pow(ratio, source.exponent));
+        (squared   ? ratio * ratio
+            : unit ? ratio
+                   : std::pow(ratio, source.exponent));
     }
     return;
   }
@@ -571,17 +572,44 @@ Status normalizeWeights(WeightNormalization normalization, double* weights, int 
       {
         return Status::Ok;
       }
-      if (!(sum > 0.0) || !std::isfinite(sum))
+      const double inverse = 1.0 / sum;
+      if (sum > 0.0 && std::isfinite(sum) && std::isfinite(inverse))
+      {
+        if (sum != 1.0)
+        {
+          for (int k = 0; k < count; ++k)
+          {
+            weights[k] *= inverse;
+          }
+        }
+        return Status::Ok;
+      }
+      // A sum that overflows (two weights of 1e308) or whose inverse does (subnormal weights):
+      // the same ratios with the weights scaled by a power of two (exact) so the largest is
+      // in [1/2, 1). NaN weights fail here too.
+      double largest = 0.0;
+      for (int k = 0; k < count; ++k)
+      {
+        largest = std::max(largest, std::abs(weights[k]));
+      }
+      if (!std::isfinite(largest) || std::isnan(sum))
       {
         return Status::InvalidArgument;
       }
-      if (sum != 1.0)
+      int exponent = 0;
+      std::frexp(largest, &exponent);
+      double scaledSum = 0.0;
+      for (int k = 0; k < count; ++k)
       {
-        const double inverse = 1.0 / sum;
-        for (int k = 0; k < count; ++k)
-        {
-          weights[k] *= inverse;
-        }
+        scaledSum += std::ldexp(weights[k], -exponent);
+      }
+      if (!(scaledSum > 0.0))
+      {
+        return Status::InvalidArgument;
+      }
+      for (int k = 0; k < count; ++k)
+      {
+        weights[k] = std::ldexp(weights[k], -exponent) / scaledSum;
       }
       return Status::Ok;
     }

@@ -188,8 +188,10 @@ VTKLCT_EXPORT void distanceWeights(
   const ProbeBlendSet& set, const WeightSource& source, const Eigen::Vector3d& p, double* w);
 
 /// Raw weights of a point normalised as asked. Fails with InvalidArgument when Linear
-/// normalisation meets a non-positive sum of weights that are not all zero; all-zero weights
-/// come back all zero (the point stays put).
+/// normalisation meets a non-positive sum of weights that are not all zero, or a weight that is
+/// NaN or Inf; all-zero weights come back all zero (the point stays put). Finite weights whose
+/// sum overflows (1e308 twice) or whose sum's inverse does (subnormal weights) are normalised
+/// by their ratios, as any other weights.
 VTKLCT_EXPORT Status normalizeWeights(
   WeightNormalization normalization, double* weights, int count);
 

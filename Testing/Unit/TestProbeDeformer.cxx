@@ -1049,6 +1049,74 @@ TEST(ProbeDeformer, MultithreadedResultEqualsSerialResult)
   }
 }
 
+// Linear normalisation is by ratios: weights whose sum overflows (1e308 each) or whose sum's
+// inverse does (subnormal weights) were refused with the cause "weights do not sum to a positive
+// number"; they deform exactly as the same ratios near 1 do. Inf or NaN among them still fails.
+TEST(ProbeDeformer, LinearNormalisationOfHugeAndSubnormalWeights)
+{
+  RandomTransforms r(23);
+  Scene s = randomScene(r, TransformClass::GeneralAffine, 3, 40);
+  // Each point's largest weight 1, so that 1.5e308 times them overflows their sum.
+  std::vector<double> unit = s.weights;
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+  {
+    const auto row = unit.begin() + static_cast<std::ptrdiff_t>(3 * i);
+    const double top = *std::max_element(row, row + 3);
+    std::transform(row, row + 3, row, [top](double w) { return w / top; });
+  }
+  const auto deformed = [&](double scale) {
+    for (std::size_t i = 0; i < unit.size(); ++i)
+    {
+      s.weights[i] = unit[i] * scale;
+    }
+    vtkSmartPointer<vtkProbeDeformerLCT> f = deformerFor(s, vtkProbeDeformerLCT::POLAR);
+    vtkNew<lct_test::ErrorCounter> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    f->SetInputData(toPolyData(s));
+    f->Update();
+    EXPECT_EQ(errors->Count, 0) << scale << ": " << errors->Last;
+    std::vector<Eigen::Vector3d> out;
+    auto* d = vtkPointSet::SafeDownCast(f->GetOutputDataObject(0));
+    for (vtkIdType i = 0; d && i < d->GetNumberOfPoints(); ++i)
+    {
+      out.push_back(pointOf(d, i));
+    }
+    return out;
+  };
+  const std::vector<Eigen::Vector3d> reference = deformed(1.0);
+  ASSERT_EQ(unit.size(), 3 * s.points.size());
+  ASSERT_EQ(reference.size(), s.points.size());
+  for (const double scale : { 0x1.8p1023, 0x1p-1030, 1e-310 / 3.0 })
+  {
+    const std::vector<Eigen::Vector3d> out = deformed(scale);
+    ASSERT_EQ(out.size(), reference.size()) << scale;
+    for (std::size_t i = 0; i < out.size(); ++i)
+    {
+      EXPECT_LE((out[i] - reference[i]).norm(), 1e-12 * (1.0 + reference[i].norm()))
+        << scale << " " << i;
+    }
+  }
+  // The core: exact ratios, and non-finite weights refused.
+  double huge[] = { 1e308, 1e308, 1e308 };
+  ASSERT_EQ(lct::normalizeWeights(lct::WeightNormalization::Linear, huge, 3), lct::Status::Ok);
+  for (const double w : huge)
+  {
+    EXPECT_EQ(w, 1.0 / 3.0);
+  }
+  double tiny[] = { 1e-320, 3e-320 };
+  ASSERT_EQ(lct::normalizeWeights(lct::WeightNormalization::Linear, tiny, 2), lct::Status::Ok);
+  EXPECT_NEAR(tiny[0], 0.25, 1e-3); // 1e-320 and 3e-320 are subnormals: ratios to ~4 digits
+  EXPECT_NEAR(tiny[1], 0.75, 1e-3);
+  for (const double bad :
+    { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN() })
+  {
+    double weights[] = { 1e308, 1e308, bad };
+    EXPECT_EQ(lct::normalizeWeights(lct::WeightNormalization::Linear, weights, 3),
+      lct::Status::InvalidArgument)
+      << bad;
+  }
+}
+
 TEST(ProbeDeformer, WeightAndIndexArraysOfEveryTypeGiveTheSameResult)
 {
   RandomTransforms r(20);
