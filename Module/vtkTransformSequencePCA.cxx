@@ -219,6 +219,30 @@ int vtkTransformSequencePCA::Compute()
       weights.push_back(in.Weights[static_cast<std::size_t>(c)]);
     }
   }
+  {
+    int lightest = -1, heaviest = -1;
+    for (int c = 0; c < in.Channels; ++c)
+    {
+      const double w = in.Weights[static_cast<std::size_t>(c)];
+      if (c == this->RootChannel)
+      {
+        continue;
+      }
+      lightest = lightest < 0 || w < in.Weights[static_cast<std::size_t>(lightest)] ? c : lightest;
+      heaviest = heaviest < 0 || w > in.Weights[static_cast<std::size_t>(heaviest)] ? c : heaviest;
+    }
+    const double light = in.Weights[static_cast<std::size_t>(lightest)];
+    const double heavy = in.Weights[static_cast<std::size_t>(heaviest)];
+    if (heavy / lct::kMaxChannelWeightRatio > light)
+    {
+      vtkErrorMacro(<< "Compute: channel weights from " << lct::formatNumber(light) << " (channel "
+                    << lightest << ") to " << lct::formatNumber(heavy) << " (channel " << heaviest
+                    << ") span more than " << lct::formatNumber(lct::kMaxChannelWeightRatio)
+                    << ": the lighter channels would fall below the SVD's resolution (their "
+                       "components would be noise).");
+      return 0;
+    }
+  }
   std::vector<lct::LogCoords> logs(static_cast<std::size_t>(frames) * analysed);
   for (int c = 0; c < in.Channels; ++c)
   {

@@ -58,6 +58,11 @@ Result<SequencePCA> sequencePCA(
       }
       pca.weights[static_cast<std::size_t>(c)] = weights[c];
     }
+    const auto range = std::minmax_element(pca.weights.begin(), pca.weights.end());
+    if (*range.second / kMaxChannelWeightRatio > *range.first)
+    {
+      return R::failure(Status::InvalidArgument);
+    }
   }
   const std::size_t count = static_cast<std::size_t>(frames) * static_cast<std::size_t>(channels);
   if (!std::all_of(logs, logs + count, [](const LogCoords& c) { return c.allFinite(); }))

@@ -64,11 +64,17 @@ struct SequencePCA
   double varianceShare(int component) const noexcept;
 };
 
+/// The largest ratio between two channel weights. The data are scaled by sqrt(weight) before the
+/// SVD, whose singular vectors are accurate to ~eps sigma_max: a channel weighted 1e-16 of the
+/// largest keeps ~8 digits, one weighted 1e-32 would be noise, so a wider spread is refused
+/// rather than losing channels silently.
+constexpr double kMaxChannelWeightRatio = 1e16;
+
 /// The PCA of `logs` (frame-major: logs[f * channels + c]), keeping at most maximumComponents
 /// components (all the non-zero ones when 0). `weights` (size channels, or null for all 1) must
-/// be finite and positive. Fails with InvalidArgument (no frames or channels, a bad weight, a
-/// negative maximumComponents), NonFinite (a non-finite log) or OutOfRange (the centred data
-/// overflow).
+/// be finite and positive, within kMaxChannelWeightRatio of each other. Fails with
+/// InvalidArgument (no frames or channels, a bad weight or spread of weights, a negative
+/// maximumComponents), NonFinite (a non-finite log) or OutOfRange (the centred data overflow).
 VTKLCT_EXPORT Result<SequencePCA> sequencePCA(const LogCoords* logs, int frames, int channels,
   const double* weights = nullptr, int maximumComponents = 0);
 

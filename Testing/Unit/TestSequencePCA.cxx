@@ -363,6 +363,12 @@ TEST(SequencePCA, BadInputIsRefused)
   // Queries after the input changed.
   ASSERT_EQ(w.pca->SetChannelWeight(1, 2.0), 1);
   refused(w.pca->GetMeanTransform(0, m), "the input changed since Compute()");
+  // Weights 1e300 apart: the light channels fell below the SVD's resolution (noise), silently.
+  ASSERT_EQ(w.pca->SetChannelWeight(1, 1e300), 1);
+  refused(w.pca->Compute(), "channel weights from 1 (channel 0) to 1e+300 (channel 1) span more");
+  ASSERT_EQ(w.pca->SetChannelWeight(1, 1e16), 1);
+  EXPECT_EQ(w.pca->Compute(), 1);
+  ASSERT_EQ(w.pca->SetChannelWeight(1, 1.0), 1);
   // Only the root channel.
   w.pca->RemoveAllFrames();
   vtkNew<vtkCollection> single;
@@ -388,6 +394,41 @@ TEST(SequencePCA, BadInputIsRefused)
   const LogCoords wide[2] = { LogCoords::Constant(1.7e308), LogCoords::Constant(-1.7e308) };
   const auto w2 = lct::sequencePCA(wide, 2, 1);
   EXPECT_TRUE(w2.ok() || w2.status == lct::Status::OutOfRange);
+}
+
+// The widest spread of channel weights accepted (kMaxChannelWeightRatio) still reproduces the
+// light channels from every component, to ~8 digits; beyond it they would be noise, so it is
+// refused.
+TEST(SequencePCA, WeightsAtTheSpreadLimitKeepTheLightChannels)
+{
+  RandomTransforms random(7);
+  const int frames = 40, channels = 3;
+  std::vector<LogCoords> logs(static_cast<std::size_t>(frames * channels));
+  for (LogCoords& l : logs)
+  {
+    l = lct::logarithm(
+      random.Affine(lct_test::TransformClass::GeneralAffine), lct::Parametrisation::Polar)
+          .value;
+  }
+  const double limit[channels] = { 1.0, lct::kMaxChannelWeightRatio, 1.0 };
+  const auto pca = lct::sequencePCA(logs.data(), frames, channels, limit);
+  ASSERT_TRUE(pca.ok());
+  double worst = 0.0;
+  for (int f = 0; f < frames; ++f)
+  {
+    for (int c = 0; c < channels; ++c)
+    {
+      const auto back = lct::reconstructLog(pca.value, f, c, pca.value.size());
+      ASSERT_TRUE(back.ok());
+      worst = std::max(worst,
+        (back.value - logs[static_cast<std::size_t>(f * channels + c)]).norm() /
+          logs[static_cast<std::size_t>(f * channels + c)].norm());
+    }
+  }
+  EXPECT_LE(worst, 1e-6);
+  const double beyond[channels] = { 1.0, 4 * lct::kMaxChannelWeightRatio, 1.0 };
+  EXPECT_EQ(
+    lct::sequencePCA(logs.data(), frames, channels, beyond).status, lct::Status::InvalidArgument);
 }
 
 // FuzzAnalysis A2: singular values near 1e200 squared to Inf, and the explained fractions were
