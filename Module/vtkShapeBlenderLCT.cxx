@@ -126,6 +126,17 @@ std::string describeTriangle(const std::vector<lct::Triangle>& triangles, std::i
   return "triangle " + std::to_string(face) + " (points " + std::to_string(t[0]) + ", " +
     std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
 }
+
+/// Why a triangle beyond lct::kTriangleScaleExponent is refused, with its size.
+std::string scaleRangeProblem(const lct::Triangle& t, const std::vector<Eigen::Vector3d>& points)
+{
+  const double largest = lct::triangleSize(points[t[0]], points[t[1]], points[t[2]]);
+  const double bound = std::ldexp(1.0, lct::kTriangleScaleExponent);
+  return std::string("too ") + (largest > 1.0 ? "large" : "small") +
+    " (its largest edge coordinate is " + lct::formatNumber(largest) + "; the blender needs " +
+    lct::formatNumber(1.0 / bound) + " to " + lct::formatNumber(bound) +
+    ", so that areas stay within double's range): rescale the meshes";
+}
 } // namespace
 
 struct vtkShapeBlenderLCT::Internals
@@ -295,6 +306,11 @@ int vtkShapeBlenderLCT::RequestData(
         vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face)
                       << " is degenerate (zero or near-zero area): its affine map is undefined");
       }
+      else if (issue.status == lct::Status::OutOfRange)
+      {
+        vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face) << " is "
+                      << scaleRangeProblem(triangles[issue.face], points));
+      }
       else if (issue.status == lct::Status::InvalidArgument && issue.face >= 0)
       {
         vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face)
@@ -380,6 +396,15 @@ int vtkShapeBlenderLCT::RequestData(
         vtkErrorMacro(<< "target " << issue.target << ": "
                       << describeTriangle(in.Triangles, issue.face)
                       << " is degenerate (zero or near-zero area): its affine map is singular");
+      }
+      else if (issue.status == lct::Status::OutOfRange &&
+        !lct::isTriangleScaleInRange(targets[issue.target][in.Triangles[issue.face][0]],
+          targets[issue.target][in.Triangles[issue.face][1]],
+          targets[issue.target][in.Triangles[issue.face][2]]))
+      {
+        vtkErrorMacro(<< "target " << issue.target << ": "
+                      << describeTriangle(in.Triangles, issue.face) << " is "
+                      << scaleRangeProblem(in.Triangles[issue.face], targets[issue.target]));
       }
       else
       {

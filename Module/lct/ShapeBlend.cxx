@@ -97,7 +97,7 @@ Eigen::Vector3d ghostVertex(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
   const Eigen::Vector3d n = (b - a).cross(c - a);
-  return (a + b + c) / 3.0 + n / std::sqrt(n.norm());
+  return (a + b + c) / 3.0 + n / std::sqrt(n.stableNorm());
 }
 
 bool isDegenerateTriangle(
@@ -105,9 +105,24 @@ bool isDegenerateTriangle(
 {
   const double longest =
     std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
-  const double n = (b - a).cross(c - a).norm();
+  const double n = (b - a).cross(c - a).stableNorm(); // |n| up to 2^961 (kTriangleScaleExponent)
   // Written so that NaN (and a zero longest edge) counts as degenerate.
   return !(n > kDegenerateTriangleRatio * longest) || !std::isfinite(n) || !std::isfinite(longest);
+}
+
+double triangleSize(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  return std::max({ (b - a).cwiseAbs().maxCoeff(), (c - a).cwiseAbs().maxCoeff(),
+    (c - b).cwiseAbs().maxCoeff() });
+}
+
+bool isTriangleScaleInRange(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const double largest = triangleSize(a, b, c);
+  return largest == 0.0 ||
+    (largest <= std::ldexp(1.0, kTriangleScaleExponent) &&
+      largest >= std::ldexp(1.0, -kTriangleScaleExponent));
 }
 
 struct ShapeBlender::Data
@@ -220,6 +235,11 @@ ShapeBlendIssue ShapeBlender::setRest(const std::vector<Eigen::Vector3d>& points
     {
       const Triangle& t = triangles[j];
       const Eigen::Vector3d &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+      if (!isTriangleScaleInRange(a, b, c))
+      {
+        failure.record({ Status::OutOfRange, -1, j });
+        return;
+      }
       if (isDegenerateTriangle(a, b, c))
       {
         failure.record({ Status::Singular, -1, j });
@@ -387,6 +407,11 @@ ShapeBlendIssue ShapeBlender::setTargets(
       {
         const Triangle& t = d.Triangles[j];
         const Eigen::Vector3d &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+        if (!isTriangleScaleInRange(a, b, c))
+        {
+          failure.record({ Status::OutOfRange, target, j });
+          return;
+        }
         if (isDegenerateTriangle(a, b, c))
         {
           failure.record({ Status::Singular, target, j });

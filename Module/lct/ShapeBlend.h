@@ -35,7 +35,9 @@
  *    its own piece: it moves by that linear blend of its positions.
  *
  * Degenerate triangles (|n| <= kDegenerateTriangleRatio (longest edge)^2: zero area, repeated or
- * collinear points) are reported with their face id and never divided by.
+ * collinear points) are reported with their face id and never divided by; so are triangles whose
+ * size is beyond kTriangleScaleExponent (OutOfRange), whose squared edges and areas would leave
+ * double's range (they would otherwise read as degenerate, or as Inf).
  */
 #ifndef lct_ShapeBlend_h
 #define lct_ShapeBlend_h
@@ -59,6 +61,11 @@ namespace lct
 /// A triangle is degenerate when |n| = 2 area <= this times its longest edge squared (the sine
 /// of its largest angle is below ~1e-12): its ghost vertex and its map would be noise.
 constexpr double kDegenerateTriangleRatio = 1e-12;
+
+/// A triangle's edge coordinates (differences of its points) must be at most 2^this in
+/// magnitude, and its largest one at least 2^-this (~1e+-144): squared edges, areas (2^+-960)
+/// and the ghost vertex stay normal doubles.
+constexpr int kTriangleScaleExponent = 480;
 
 using Triangle = std::array<std::int64_t, 3>;
 
@@ -91,8 +98,9 @@ public:
 
   /// Validates the rest mesh, builds the per-face maps and factorises the normal equations.
   /// Fails with InvalidArgument (no triangles, or a point index outside [0, points) — `face`
-  /// says which), NonFinite (`point` says which), Singular (a degenerate triangle, `face`) or
-  /// NumericalFailure (the factorisation failed: please report the mesh).
+  /// says which), NonFinite (`point` says which), Singular (a degenerate triangle, `face`),
+  /// OutOfRange (a triangle beyond kTriangleScaleExponent, `face`) or NumericalFailure (the
+  /// factorisation failed: please report the mesh).
   ShapeBlendIssue setRest(const std::vector<Eigen::Vector3d>& points,
     const std::vector<Triangle>& triangles, const ParallelFor& parallel = {});
 
@@ -136,6 +144,15 @@ VTKLCT_EXPORT Eigen::Vector3d ghostVertex(
 
 /// Whether a triangle is degenerate by kDegenerateTriangleRatio (or not finite).
 VTKLCT_EXPORT bool isDegenerateTriangle(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
+/// A triangle's size: the largest magnitude of its edge coordinates (differences of its points).
+VTKLCT_EXPORT double triangleSize(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
+/// Whether a triangle's size is within kTriangleScaleExponent (a triangle with all its points
+/// equal is, and is degenerate). False when an edge is not finite.
+VTKLCT_EXPORT bool isTriangleScaleInRange(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 } // namespace lct

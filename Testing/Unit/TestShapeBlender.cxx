@@ -691,6 +691,44 @@ TEST(ShapeBlendBadInput, DegenerateTriangles)
   }
 }
 
+// Meshes at 1e+-200: their squared edges and areas leave double's range, and they were refused
+// as "degenerate (zero or near-zero area)". They are refused as too large or too small, and a
+// target 1e100 times the rest mesh (inside the range) is blended like any other.
+TEST(ShapeBlendBadInput, MeshesBeyondTheScaleRange)
+{
+  const auto scaled = [](vtkPolyData* pd, double factor) {
+    vtkPoints* points = pd->GetPoints();
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      points->SetPoint(i, factor * p[0], factor * p[1], factor * p[2]);
+    }
+    points->Modified();
+  };
+  {
+    BadInputFixture f;
+    scaled(f.restPd, 1e-200);
+    f.expectFailure("rest mesh: triangle 0 (points 0, 1, 25) is too small");
+  }
+  {
+    BadInputFixture f;
+    scaled(f.target, 1e200);
+    f.expectFailure("target 0: triangle 0 (points 0, 1, 25) is too large");
+    EXPECT_EQ(f.errors->Last.find("degenerate"), std::string::npos) << f.errors->Last;
+  }
+  {
+    BadInputFixture f;
+    scaled(f.target, 1e100);
+    f.blender->SetWeight(0, 1.0);
+    f.blender->Update();
+    EXPECT_EQ(f.errors->Count, 0) << f.errors->Last;
+    const std::vector<Eigen::Vector3d> out = lct_test::pointsOf(f.blender->GetOutput());
+    const std::vector<Eigen::Vector3d> expected = lct_test::pointsOf(f.target);
+    EXPECT_LE(maxDistance(out, expected), 1e-9 * 1e100);
+  }
+}
+
 TEST(ShapeBlendBadInput, NonFiniteWeightsAndIndicesOutOfRange)
 {
   for (const double bad :
