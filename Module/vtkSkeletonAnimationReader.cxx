@@ -28,9 +28,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkSkeletonAnimationReader);
@@ -86,6 +89,44 @@ std::vector<Node> skeletonNodes(
     }
   }
   return nodes;
+}
+
+/// The MOTION section of a BVH file (its first word HIERARCHY): the count its `Frames:` line
+/// declares (as written) and the number of data rows after `Frame Time:`. False for another
+/// file, or a BVH file without those lines (assimp reports that itself).
+bool bvhMotionRows(const std::string& file, std::string& declared, long& rows)
+{
+  std::ifstream in(file);
+  std::string word;
+  if (!(in >> word) || word != "HIERARCHY")
+  {
+    return false;
+  }
+  std::string line;
+  while (std::getline(in, line) && line.find("MOTION") == std::string::npos)
+  {
+  }
+  bool timeLine = false;
+  declared.clear();
+  while (!timeLine && std::getline(in, line))
+  {
+    const std::size_t frames = line.find("Frames:");
+    if (frames != std::string::npos)
+    {
+      std::istringstream(line.substr(frames + 7)) >> declared;
+    }
+    timeLine = line.find("Frame Time:") != std::string::npos;
+  }
+  if (!timeLine || declared.empty())
+  {
+    return false;
+  }
+  rows = 0;
+  while (std::getline(in, line))
+  {
+    rows += line.find_first_not_of(" \t\r") != std::string::npos ? 1 : 0;
+  }
+  return true;
 }
 } // namespace
 
@@ -204,6 +245,30 @@ bool vtkSkeletonAnimationReader::Load()
     {
       vtkErrorMacro(<< file << ": the key times are not increasing at key " << f << ".");
       return false;
+    }
+  }
+  // BVH: the Frames: line gives the frame count (the format's rule, which assimp follows for
+  // counts above 0). Rows after them are not read (some exporters write one more: Boxing_Toes)
+  // and said so; a count the frames read do not match (Frames: 0 and a row, which assimp reads
+  // as one frame) is an error rather than an animation the header denies.
+  std::string declared;
+  long rows = 0;
+  if (bvhMotionRows(file, declared, rows))
+  {
+    if (std::strtod(declared.c_str(), nullptr) != static_cast<double>(frames))
+    {
+      vtkErrorMacro(<< file << ": its Frames: line says " << declared
+                    << " but its MOTION section holds " << rows
+                    << (rows == 1 ? " data row" : " data rows")
+                    << ": the header is wrong; fix the Frames: line.");
+      in = Internals();
+      return false;
+    }
+    if (rows > static_cast<long>(frames))
+    {
+      vtkWarningMacro(<< file << ": " << rows - static_cast<long>(frames)
+                      << " data row(s) after the " << frames
+                      << " its Frames: line declares are not read.");
     }
   }
   lct::SkeletalAnimation& a = in.Animation;

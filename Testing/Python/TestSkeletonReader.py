@@ -6,12 +6,13 @@ assimp-testmodels data.
 """
 import os
 import sys
+import tempfile
 import unittest
 
 from lct_testing import ErrorRecorder
 
 from vtklct import vtkSkeletonAnimationReader, vtkTransformSequencePCA
-from vtkmodules.vtkCommonCore import vtkCollection
+from vtkmodules.vtkCommonCore import vtkCollection, vtkCommand
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 
@@ -52,6 +53,55 @@ class SkeletonReaderTest(unittest.TestCase):
         reader.UpdateInformation()
         self.assertEqual(reader.GetNumberOfJoints(), 0)
         self.assertIn("/nonexistent/clip.bvh", errors.messages[-1])
+
+    def test_frames_line_against_data_rows(self):
+        # The Frames: line is the frame count; assimp read "Frames: 0" and a row as one frame,
+        # and dropped rows after the count without a word.
+        header = """HIERARCHY
+ROOT Hips
+{
+  OFFSET 0 0 0
+  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation
+  JOINT Chest
+  {
+    OFFSET 0 5 0
+    CHANNELS 3 Zrotation Xrotation Yrotation
+    End Site
+    {
+      OFFSET 0 5 0
+    }
+  }
+}
+MOTION
+Frames: %s
+Frame Time: 0.04
+"""
+        row = "1 2 3 10 20 30 5 6 7\n"
+        directory = tempfile.mkdtemp()
+
+        def load(frames_line, rows):
+            path = os.path.join(directory, "clip%d.bvh" % rows)
+            with open(path, "w") as f:
+                f.write(header % frames_line + row * rows)
+            reader = vtkSkeletonAnimationReader()
+            errors = ErrorRecorder(reader)
+            warnings = ErrorRecorder(reader, vtkCommand.WarningEvent)
+            reader.SetFileName(path)
+            reader.UpdateInformation()
+            return reader, errors, warnings
+
+        reader, errors, warnings = load("0", 1)
+        self.assertEqual(reader.GetNumberOfFrames(), 0)
+        self.assertIn("Frames: line says 0 but its MOTION section holds 1 data row",
+                      errors.messages[-1])
+        reader, errors, warnings = load("2", 4)
+        self.assertEqual(reader.GetNumberOfFrames(), 2)
+        self.assertEqual(errors.count, 0)
+        self.assertIn("2 data row(s) after the 2 its Frames: line declares are not read",
+                      warnings.messages[-1])
+        reader, errors, warnings = load("3.0", 3)
+        self.assertEqual(reader.GetNumberOfFrames(), 3)
+        self.assertEqual(errors.count + warnings.count, 0)
 
 
 if __name__ == "__main__":
