@@ -3,6 +3,7 @@
 #include "vtkSkeletonAnimationReader.h"
 
 #include "lct/BVHWriter.h"
+#include "lct/Format.h"
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
 
@@ -116,6 +117,21 @@ int vtkMotionCodecLCT::CompressOrThrow(vtkSkeletonAnimationReader* reader, const
                   << " is not positive and finite (Tolerance " << this->Tolerance
                   << ", RelativeTolerance " << this->RelativeTolerance << ", H " << height
                   << "); nothing written.");
+    return 0;
+  }
+  // The reader's values are assimp's float32: a bound below their resolution would be verified
+  // here against the float32 values but missed against the file's own text.
+  const double resolution = lct::float32PositionResolution(*animation);
+  if (tolerance < resolution)
+  {
+    vtkErrorMacro(<< "Compress: the tolerance " << lct::formatNumber(tolerance)
+                  << " is below the precision of the input as read: the reader's values are "
+                     "float32 (assimp), which can put world positions up to "
+                  << lct::formatNumber(resolution)
+                  << (height > 0.0
+                         ? " (" + lct::formatNumber(100.0 * resolution / height) + " % of H)"
+                         : std::string())
+                  << " from the file's text; nothing written.");
     return 0;
   }
   lct::MotionMetadata metadata;

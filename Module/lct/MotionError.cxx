@@ -59,9 +59,37 @@ PositionErrorStatistics positionErrors(
   stats.mean = sum / static_cast<double>(count);
   const std::size_t rank =
     static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(count))) - 1;
-  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(rank), errors.end());
+  std::nth_element(
+    errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(rank), errors.end());
   stats.p99 = errors[rank];
   return stats;
+}
+
+double float32PositionResolution(const SkeletalAnimation& animation)
+{
+  const int joints = animation.jointCount();
+  std::vector<double> chain(static_cast<std::size_t>(joints));
+  std::vector<int> depth(static_cast<std::size_t>(joints));
+  for (int j = 0; j < joints; ++j)
+  {
+    const int parent = animation.joints[static_cast<std::size_t>(j)].parent;
+    depth[static_cast<std::size_t>(j)] =
+      parent < 0 ? 0 : depth[static_cast<std::size_t>(parent)] + 1;
+  }
+  double worst = 0.0;
+  for (int f = 0; f < animation.frames; ++f)
+  {
+    for (int j = 0; j < joints; ++j)
+    {
+      const int parent = animation.joints[static_cast<std::size_t>(j)].parent;
+      const double length = animation.local(f, j).block<3, 1>(0, 3).norm();
+      chain[static_cast<std::size_t>(j)] =
+        (parent < 0 ? 0.0 : chain[static_cast<std::size_t>(parent)]) + length;
+      worst = std::max(
+        worst, (1.0 + depth[static_cast<std::size_t>(j)]) * chain[static_cast<std::size_t>(j)]);
+    }
+  }
+  return kFloat32ChainFactor * std::ldexp(worst, -24);
 }
 
 double restPoseHeight(const SkeletalAnimation& animation)
@@ -79,8 +107,8 @@ double restPoseHeight(const SkeletalAnimation& animation)
     const int parent = animation.joints[static_cast<std::size_t>(j)].parent;
     world[static_cast<std::size_t>(j)] = parent < 0
       ? Eigen::Vector3d::Zero()
-      : Eigen::Vector3d(world[static_cast<std::size_t>(parent)] +
-          animation.local(0, j).block<3, 1>(0, 3));
+      : Eigen::Vector3d(
+          world[static_cast<std::size_t>(parent)] + animation.local(0, j).block<3, 1>(0, 3));
     low = std::min(low, world[static_cast<std::size_t>(j)].y());
     high = std::max(high, world[static_cast<std::size_t>(j)].y());
   }

@@ -76,6 +76,12 @@ class MotionCodecTest(unittest.TestCase):
         codec.SetTolerance(float("nan"))
         self.assertEqual(codec.Compress(read(CLIP), target), 0)
         self.assertIn("Tolerance is nan", errors.messages[-1])
+        # A bound below what float32 (assimp's reading) resolves: it would be verified against
+        # the float32 values and missed against the file's text, so it is refused.
+        codec.SetTolerance(1e-5)
+        self.assertEqual(codec.Compress(read(CLIP), target), 0)
+        self.assertIn("below the precision of the input as read", errors.messages[-1])
+        self.assertFalse(os.path.exists(target))
         codec.SetTolerance(0.0)
         codec.SetRotationOrder("ABC")
         self.assertEqual(codec.Compress(read(CLIP), target), 0)

@@ -6,6 +6,7 @@
 #include "VtkTestHelpers.h"
 
 #include "lct/BVHWriter.h"
+#include "lct/MotionError.h"
 #include "lct/Skeleton.h"
 #include "vtkSkeletonAnimationReader.h"
 
@@ -25,7 +26,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -120,6 +120,12 @@ TEST_P(SkeletonReaderOnClips, ForwardKinematicsMatchesADirectEvaluationOfTheFile
   }
   // assimp parses float32 values: ~1e-7 relative, accumulated along chains of up to ~10 bones.
   EXPECT_LE(worst, 1e-5 * height) << GetParam() << ": worst " << worst << ", height " << height;
+  // The bound vtkMotionCodecLCT refuses tolerances below holds on real files.
+  const double resolution = lct::float32PositionResolution(*a);
+  EXPECT_LE(worst, resolution) << GetParam() << ": worst " << worst;
+  EXPECT_LE(resolution, 1e-5 * height)
+    << GetParam() << ": a bound this loose would refuse usable tolerances";
+  RecordProperty("Float32ResolutionOverWorst", std::to_string(resolution / worst));
   RecordProperty("WorstPositionErrorOverHeight", std::to_string(worst / height));
 }
 
