@@ -324,6 +324,7 @@ int Compress(const Arguments& args)
   metadata.height = clip.height;
   lct::MotionCompressionOptions options;
   options.tolerance = tolerance;
+  options.inputResolution = lct::float32PositionResolution(clip.animation); // assimp's float32
   options.degree = args.degree;
   if (!args.quiet)
   {

@@ -3,7 +3,6 @@
 #include "vtkSkeletonAnimationReader.h"
 
 #include "lct/BVHWriter.h"
-#include "lct/Format.h"
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
 
@@ -119,21 +118,6 @@ int vtkMotionCodecLCT::CompressOrThrow(vtkSkeletonAnimationReader* reader, const
                   << "); nothing written.");
     return 0;
   }
-  // The reader's values are assimp's float32: a bound below their resolution would be verified
-  // here against the float32 values but missed against the file's own text.
-  const double resolution = lct::float32PositionResolution(*animation);
-  if (tolerance < resolution)
-  {
-    vtkErrorMacro(<< "Compress: the tolerance " << lct::formatNumber(tolerance)
-                  << " is below the precision of the input as read: the reader's values are "
-                     "float32 (assimp), which can put world positions up to "
-                  << lct::formatNumber(resolution)
-                  << (height > 0.0
-                         ? " (" + lct::formatNumber(100.0 * resolution / height) + " % of H)"
-                         : std::string())
-                  << " from the file's text; nothing written.");
-    return 0;
-  }
   lct::MotionMetadata metadata;
   metadata.rotationOrder = order;
   metadata.height = height;
@@ -145,6 +129,7 @@ int vtkMotionCodecLCT::CompressOrThrow(vtkSkeletonAnimationReader* reader, const
   metadata.inputChannels = channels;
   lct::MotionCompressionOptions options;
   options.tolerance = tolerance;
+  options.inputResolution = lct::float32PositionResolution(*animation); // assimp's float32
   lct::MotionCompressionReport report;
   std::string why;
   const lct::Result<std::string> file =

@@ -260,7 +260,7 @@ bool vtkSkeletonAnimationReader::Load()
       vtkErrorMacro(<< file << ": its Frames: line says " << declared
                     << " but its MOTION section holds " << rows
                     << (rows == 1 ? " data row" : " data rows")
-                    << ": the header is wrong; fix the Frames: line.");
+                    << ": the header is wrong; fix the Frames: line");
       in = Internals();
       return false;
     }

@@ -1,6 +1,7 @@
 #include "lct/MotionCodec.h"
 
 #include "lct/BSplineFit.h"
+#include "lct/Format.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/SO3.h"
 
@@ -1078,6 +1079,17 @@ Result<std::string> compressMotion(const SkeletalAnimation& animation,
   if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
   {
     return fail(Status::InvalidArgument, "the tolerance must be positive and finite");
+  }
+  if (options.tolerance < options.inputResolution)
+  {
+    const std::string share = metadata.height > 0.0
+      ? " (" + formatNumber(100.0 * options.inputResolution / metadata.height) + " % of H)"
+      : std::string();
+    return fail(Status::InvalidArgument,
+      "the tolerance " + formatNumber(options.tolerance) +
+        " is below the precision of the input as read: its values are float32, which can put "
+        "world positions up to " + formatNumber(options.inputResolution) + share +
+        " from the file's own values");
   }
   if (!(options.quantisationShare > 0.0 && options.quantisationShare < 1.0) ||
     options.degree < 0 || options.degree > 3 || options.searchSteps < 0 ||

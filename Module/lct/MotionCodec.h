@@ -72,7 +72,11 @@ struct MotionMetadata
 
 struct MotionCompressionOptions
 {
-  double tolerance = 0.0;         ///< max world-position error, in the units of the file
+  double tolerance = 0.0; ///< max world-position error, in the units of the file
+  /// How far the input's positions may be from the file's own values (float32 readers:
+  /// lct::float32PositionResolution); a tolerance below it is refused, since it would be
+  /// verified against the values read and missed against the file. 0: exact input.
+  double inputResolution = 0.0;
   int degree = 0;                 ///< 0: per track the better of 1 and 3; else 1, 2 or 3
   double quantisationShare = 0.8; ///< q above, in (0, 1)
   bool searchBudget = true;       ///< false: only the first budget that passes (no search)
@@ -80,7 +84,7 @@ struct MotionCompressionOptions
   /// 2: rotation tracks correct the decoded positions below them; 1: orientations only; 0: each
   /// track fitted to its own input (see step 3 above).
   int compensation = 2;
-  int refineSteps = 5;            ///< steps of the per-frame budget refinement (0: none)
+  int refineSteps = 5; ///< steps of the per-frame budget refinement (0: none)
   /// Called after each trial with a line of progress (may be empty).
   std::function<void(const std::string&)> progress;
 };
@@ -101,7 +105,8 @@ struct MotionCompressionReport
 
 /// Compresses `animation` (consistent, finite, every local transform in Aff+(3)) so that the
 /// maximum world-position error is at most options.tolerance. Fails with InvalidArgument (an
-/// inconsistent animation, a tolerance that is not positive and finite, a bad option),
+/// inconsistent animation, a tolerance that is not positive and finite or is below
+/// options.inputResolution, a bad option),
 /// NonFinite, NotAffine, NegativeDeterminant or Singular (a local transform outside Aff+(3)),
 /// or InaccurateResult (no budget met the tolerance: it is below the precision of the input).
 /// `why` names the cause in words.
