@@ -10,7 +10,10 @@
  * Decompress() writes a decoded file back as BVH.
  *
  * The tolerance is Tolerance (file units) when it is positive, else RelativeTolerance times the
- * skeleton height H (the Y extent of the rest pose; default 0.01, i.e. 1 % of H).
+ * skeleton height H (the Y extent of the rest pose; default 0.01, i.e. 1 % of H). It must be at
+ * least the precision of the reader's float32 values in world position
+ * (lct::float32PositionResolution, ~1e-6 of H on the CMU clips): a smaller bound would be
+ * verified against those values and missed against the file's own text.
  *
  * After a successful Compress(): GetCompressedBytes(), GetCompressionFactor() (4 bytes x frames
  * x channels / bytes, channels counted as a BVH file has them: 6 for each root, 3 for every

@@ -39,9 +39,10 @@
  * returns 0 and the output keeps its last valid result (empty before the first): no input, no
  * triangles, polygons that are not triangles or triangle strips (run vtkTriangleFilter on the rest
  * mesh and every target), NaN/Inf points, degenerate (zero-area) triangles in the rest mesh or a
- * target, a target with another point count or other triangles (count or connectivity), NaN/Inf
- * weights, a blend whose maps overflow (an extrapolation too far). SetWeight / GetWeight with an
- * index out of range and AddTarget(nullptr) are reported at once.
+ * target, triangles too large or too small for double's range (beyond 2^+-480, ~1e+-144: areas
+ * would overflow or underflow), a target with another point count or other triangles (count or
+ * connectivity), NaN/Inf weights, a blend whose maps overflow (an extrapolation too far). SetWeight
+ * / GetWeight with an index out of range and AddTarget(nullptr) are reported at once.
  *
  * @warning Targets are read when the filter executes; they are not pipeline inputs (a target
  * produced by a filter must be updated first). The filter holds a reference to each target.

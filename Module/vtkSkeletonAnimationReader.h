@@ -11,7 +11,8 @@
  * slerp for rotation, between keys; a single key is constant), or the node's own transform for
  * joints without a channel (end sites, fixed helper nodes). Frames are the key times of the
  * channel with the most keys, assumed evenly spaced; for BVH they are the file's data rows, at
- * its Frame Time.
+ * its Frame Time: as many as its Frames: line declares (rows after them are not read, with a
+ * warning; a count the rows read do not match, such as Frames: 0 before a row, is an error).
  *
  * Output (vtkPolyDataAlgorithm, one frame per request): the joints' world positions as points
  * (end sites included), bones as lines (parent to child), point data "JointName"

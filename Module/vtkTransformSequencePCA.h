@@ -85,7 +85,8 @@ public:
   ///@{
   /**
    * The weight of a channel in the analysis (default 1; must be finite and positive). Returns
-   * 0 with an error for a bad channel or weight.
+   * 0 with an error for a bad channel or weight. Compute() refuses weights more than 1e16 apart
+   * (lct::kMaxChannelWeightRatio): lighter channels would fall below the SVD's resolution.
    */
   int SetChannelWeight(int channel, double weight);
   double GetChannelWeight(int channel);
