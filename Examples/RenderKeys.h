@@ -437,12 +437,16 @@ vtkSmartPointer<vtkCamera> MakeCamera(CameraValues v, const std::string& path, F
   double direction[3];
   vtkMath::Subtract(v.FocalPoint, v.Position, direction);
   const double distance = vtkMath::Norm(direction);
-  const double scale = 1.0 + std::max(vtkMath::Norm(v.Position), vtkMath::Norm(v.FocalPoint));
-  if (!(distance > 1e-12 * scale))
+  // Relative to the coordinates (as vtkCameraInterpolatorLCT::AddCamera judges a key), and above
+  // 1e-150, where vtkCamera's squared distances would underflow.
+  const double scale = std::max(vtkMath::Norm(v.Position), vtkMath::Norm(v.FocalPoint));
+  if (!(distance > 1e-12 * scale) || !(distance > 1e-150))
   {
     fail(path + " is degenerate: position and focal_point " +
-      (distance == 0.0 ? std::string("are equal")
-                       : "are only " + Num(distance) + " apart, below 1e-12 of their magnitude"));
+      (distance == 0.0             ? std::string("are equal")
+          : distance > 1e-12 * scale ? "are only " + Num(distance) + " apart, below 1e-150"
+                                     : "are only " + Num(distance) +
+              " apart, below 1e-12 of their magnitude"));
   }
   // The view-up direction matters, not its length: scale by its largest entry so that tiny
   // (even denormal) vectors are judged by their direction and vtkCamera gets a normal one.

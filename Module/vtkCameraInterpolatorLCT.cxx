@@ -1,5 +1,6 @@
 #include "vtkCameraInterpolatorLCT.h"
 
+#include "vtkLCTCameraParameters.h"
 #include "vtkLCTCheckedSet.h"
 
 #include "lct/CameraKey.h"
@@ -41,34 +42,6 @@ lct::CurveScheme toScheme(int type)
     default:
       return lct::CurveScheme::CatmullRom;
   }
-}
-
-lct::CameraParameters fromVtk(vtkCamera* camera)
-{
-  lct::CameraParameters c;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.focalPoint.data());
-  camera->GetViewUp(c.viewUp.data());
-  c.parallelProjection = camera->GetParallelProjection() != 0;
-  c.viewAngle = camera->GetViewAngle();
-  c.parallelScale = camera->GetParallelScale();
-  camera->GetWindowCenter(c.windowCenter.data());
-  camera->GetViewShear(c.viewShear.data());
-  camera->GetClippingRange(c.clippingRange.data());
-  return c;
-}
-
-void toVtk(const lct::CameraParameters& c, vtkCamera* camera)
-{
-  camera->SetFocalPoint(c.focalPoint.data());
-  camera->SetPosition(c.position.data());
-  camera->SetViewUp(c.viewUp.data());
-  camera->SetParallelProjection(c.parallelProjection);
-  camera->SetParallelScale(c.parallelScale);
-  camera->SetViewAngle(c.viewAngle);
-  camera->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);
-  camera->SetViewShear(c.viewShear[0], c.viewShear[1], c.viewShear[2]);
-  camera->SetClippingRange(c.clippingRange[0], c.clippingRange[1]);
 }
 
 struct Key
@@ -460,7 +433,7 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
     return 0;
   }
   const char* why = "";
-  const auto key = lct::toCameraKey(fromVtk(camera), &why);
+  const auto key = lct::toCameraKey(vtkLCTCamera::FromVtk(camera), &why);
   if (!key)
   {
     vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << why
@@ -547,8 +520,11 @@ int vtkCameraInterpolatorLCT::SetInterpolationType(int type)
 //------------------------------------------------------------------------------
 int vtkCameraInterpolatorLCT::SetMethod(int method)
 {
-  method = std::clamp(
-    method, static_cast<int>(METHOD_FOCAL_FRAME), static_cast<int>(METHOD_CAMERA_MATRIX));
+  if (!vtkLCTCheckedSet::InRange(this, "Method", this->Method, method,
+        static_cast<int>(METHOD_FOCAL_FRAME), static_cast<int>(METHOD_CAMERA_MATRIX)))
+  {
+    return 0;
+  }
   if (method == this->Method)
   {
     return 1;
@@ -600,7 +576,7 @@ int vtkCameraInterpolatorLCT::InterpolateCamera(double t, vtkCamera* camera)
                   << "; camera unchanged.");
     return 0;
   }
-  toVtk(result, camera);
+  vtkLCTCamera::ToVtk(result, camera);
   return 1;
 }
 

@@ -1,5 +1,6 @@
 #include "vtkCameraPathMetric.h"
 
+#include "vtkLCTCameraParameters.h"
 #include "vtkLCTCheckedSet.h"
 
 #include "lct/PathMetric.h"
@@ -27,6 +28,15 @@ Eigen::Matrix4d toEigen(vtkMatrix4x4* m)
 {
   return Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m->GetData());
 }
+
+/// Why a camera cannot be measured (the checks of vtkCameraInterpolatorLCT::AddCamera: NaN,
+/// position at the focal point, view up along the view direction, ...), or null: a degenerate
+/// camera's view matrix has zero rows and gives any excess at all.
+const char* cameraProblem(vtkCamera* camera)
+{
+  const char* why = "";
+  return lct::toCameraKey(vtkLCTCamera::FromVtk(camera), &why).ok() ? nullptr : why;
+}
 } // namespace
 
 /// The key cameras and the results of the per-segment measure.
@@ -51,6 +61,11 @@ int vtkCameraPathMetric::AddKeyCamera(double t, vtkCamera* camera)
   {
     vtkErrorMacro(<< "AddKeyCamera: " << (camera ? "the time is not finite" : "null camera")
                   << "; keys unchanged.");
+    return 0;
+  }
+  if (const char* problem = cameraProblem(camera))
+  {
+    vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": " << problem << "; keys unchanged.");
     return 0;
   }
   auto copy = vtkSmartPointer<vtkCamera>::New();
@@ -145,9 +160,16 @@ int vtkCameraPathMetric::MeasureSegments(
     {
       // The ends exactly at the pass times (no rounding of t0 + (t1 - t0) * 1).
       const double t = s == n - 1 ? pass[k + 1] : pass[k] + (pass[k + 1] - pass[k]) * s / (n - 1);
-      if (!sample(t, it, next, camera.Get()) || !add(camera, views, projections))
+      if (!sample(t, it, next, camera.Get()))
       {
         vtkErrorMacro(<< caller << ": the path failed at t = " << t << "; results unchanged.");
+        return 0;
+      }
+      const char* problem = cameraProblem(camera);
+      if (problem || !add(camera, views, projections))
+      {
+        vtkErrorMacro(<< caller << ": the path's camera at t = " << t << " cannot be measured: "
+                      << (problem ? problem : "its matrices overflow") << "; results unchanged.");
         return 0;
       }
     }
@@ -362,6 +384,12 @@ int vtkCameraPathMetric::EvaluateInterpolator(vtkCameraInterpolatorLCT* path, do
     vtkErrorMacro(<< "EvaluateInterpolator: null path or non-finite times; results unchanged.");
     return 0;
   }
+  if (t0 == t1)
+  {
+    vtkErrorMacro(<< "EvaluateInterpolator: t0 = t1 = " << t0
+                  << ": one camera is no path (nothing to measure); results unchanged.");
+    return 0;
+  }
   if (!this->Points || this->Points->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro(<< "EvaluateInterpolator: no points to measure; results unchanged.");
@@ -408,6 +436,12 @@ int vtkCameraPathMetric::EvaluateCameras(vtkCollection* collection)
     {
       vtkErrorMacro(<< "EvaluateCameras: item " << i << " is not a vtkCamera; results "
                     << "unchanged.");
+      return 0;
+    }
+    if (const char* problem = cameraProblem(camera))
+    {
+      vtkErrorMacro(<< "EvaluateCameras: camera " << i << ": " << problem
+                    << "; results unchanged.");
       return 0;
     }
     this->Sample(camera);

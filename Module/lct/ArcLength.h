@@ -13,9 +13,10 @@
  * on the curve, a few evaluations), so the speed stays even where the curve's own speed varies
  * fast (near a key where it stops).
  *
- * Intervals in which the point does not move (chord <= 1e-12 of the path's length: a turn in
- * place, a zoom) keep their own duration, and the moving intervals share the rest of the time:
- * nothing happens in zero time. A path that does not move at all keeps its times.
+ * Intervals in which the point does not move (chord <= 1e-12 of the path's length, or of the
+ * largest coordinate: a turn in place, a zoom, round-off) keep their own duration, and the moving
+ * intervals share the rest of the time: nothing happens in zero time. A path that does not move at
+ * all keeps its times.
  */
 #ifndef lct_ArcLength_h
 #define lct_ArcLength_h
@@ -159,11 +160,19 @@ bool ArcLengthTime<Dim>::build(
     return false;
   }
   // Moving intervals share the time that the still ones do not keep, in proportion to length.
+  // Still: below 1e-12 of the path's length, or of its coordinates' size (round-off of a point
+  // that does not move, e.g. an eye wobbling by 1e-15 through a zoom, is not a path).
+  double size = 0.0;
+  for (const Point& p : positions)
+  {
+    size = std::max(size, p.cwiseAbs().maxCoeff());
+  }
+  const double still = 1e-12 * std::max(length, size);
   std::vector<char> moving(m - 1);
   double stillTime = 0.0, movingLength = 0.0;
   for (size_t j = 0; j + 1 < m; ++j)
   {
-    moving[j] = length > 0.0 && chord[j] > 1e-12 * length;
+    moving[j] = length > 0.0 && chord[j] > still;
     if (moving[j])
     {
       movingLength += chord[j];

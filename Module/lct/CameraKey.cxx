@@ -54,14 +54,18 @@ Result<CameraKey> toCameraKey(const CameraParameters& c, const char** why)
   }
   const Eigen::Vector3d back = c.position - c.focalPoint;
   const double distance = back.stableNorm();
+  // Relative to the coordinates (a scene 1e-12 across is as good as one 1e12 across), and
+  // above 1e-150, where vtkCamera's squared distances would underflow.
   const double scale =
-    std::max({ 1.0, c.position.cwiseAbs().maxCoeff(), c.focalPoint.cwiseAbs().maxCoeff() });
-  if (!(distance > 1e-12 * scale))
+    std::max(c.position.cwiseAbs().maxCoeff(), c.focalPoint.cwiseAbs().maxCoeff());
+  if (!(distance > 1e-12 * scale) || !(distance > 1e-150))
   {
     return failure<K>(Status::InvalidArgument,
-      distance == 0.0 ? "the position equals the focal point"
-                      : "the position and the focal point are closer than 1e-12 of their "
-                        "magnitude (no view direction)",
+      distance == 0.0              ? "the position equals the focal point"
+        : distance > 1e-12 * scale ? "the position and the focal point are closer than 1e-150 "
+                                     "(vtkCamera squares distances)"
+                                   : "the position and the focal point are closer than 1e-12 of "
+                                     "their magnitude (no view direction)",
       why);
   }
   const Eigen::Vector3d z = back / distance;

@@ -4,8 +4,10 @@
 
 #include "RandomTransforms.h"
 #include "VtkTestHelpers.h"
+#include "lct/CameraKey.h"
 
 #include "vtkCamera.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 
 #include <gtest/gtest.h>
@@ -290,6 +292,55 @@ TEST(CameraInterpolatorLCT, KeysOnOneScrewMotionAreFollowedAlongIt)
   }
 }
 
+// Keys are judged relative to their own magnitude: a scene 1e-12 across (position 5e-13 from the
+// focal point) was refused as "closer than 1e-12 of their magnitude", which it is not.
+TEST(CameraInterpolatorLCT, SmallScenesAreKeysLikeAnyOther)
+{
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  vtkNew<ErrorCounter> errors;
+  interpolator->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> a, b, out;
+  a->SetPosition(0, 0, 5e-13);
+  a->SetFocalPoint(0, 0, 0);
+  a->SetClippingRange(1e-14, 1e-12);
+  b->SetPosition(5e-13, 0, 0);
+  b->SetFocalPoint(0, 0, 0);
+  b->SetClippingRange(1e-14, 1e-12);
+  ASSERT_EQ(interpolator->AddCamera(0.0, a), 1) << errors->Last;
+  ASSERT_EQ(interpolator->AddCamera(1.0, b), 1) << errors->Last;
+  ASSERT_EQ(interpolator->InterpolateCamera(1.0, out), 1);
+  EXPECT_LE((get3(out->GetPosition()) - get3(b->GetPosition())).norm(), 1e-12 * 5e-13);
+  ASSERT_EQ(interpolator->InterpolateCamera(0.5, out), 1);
+  EXPECT_NEAR((get3(out->GetPosition()) - get3(out->GetFocalPoint())).norm(), 5e-13, 1e-24);
+  EXPECT_EQ(errors->Count, 0);
+}
+
+// ConstantSpeed on a path whose eye and focal point stay put (a zoom, a roll): every interval is
+// still, so the keys keep their times. The eye's round-off (1e-15) set the timing before.
+TEST(CameraInterpolatorLCT, ConstantSpeedKeepsTheTimesOfAStillPath)
+{
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  const auto key = [&](double t, double angle, double upX) {
+    vtkNew<vtkCamera> c;
+    c->SetPosition(0, 0, 10);
+    c->SetFocalPoint(0, 0, 0);
+    c->SetViewUp(upX, 1, 0);
+    c->SetViewAngle(angle);
+    ASSERT_EQ(interpolator->AddCamera(t, c), 1);
+  };
+  key(0.0, 10.0, 0.0);
+  key(1.0, 60.0, 0.0);
+  key(5.0, 20.0, 1.0);
+  interpolator->SetConstantSpeed(1);
+  vtkNew<vtkDoubleArray> arrivals;
+  ASSERT_EQ(interpolator->GetKeyArrivalTimes(arrivals), 1);
+  ASSERT_EQ(arrivals->GetNumberOfTuples(), 3);
+  EXPECT_EQ(arrivals->GetValue(1), 1.0);
+  vtkNew<vtkCamera> out;
+  ASSERT_EQ(interpolator->InterpolateCamera(1.0, out), 1);
+  EXPECT_NEAR(out->GetViewAngle(), 60.0, 1e-9);
+}
+
 TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
 {
   vtkNew<vtkCameraInterpolatorLCT> interpolator;
@@ -343,6 +394,20 @@ TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
   reject(good, std::nan(""), "NaN time", "not finite");
   EXPECT_EQ(interpolator->InterpolateCamera(std::nan(""), out), 0);
   EXPECT_EQ(errors->Count, ++expected);
+  {
+    // 1e-160 apart (vtkCamera itself keeps 1e-20, so only the core sees it): its squared
+    // distance would underflow.
+    lct::CameraParameters c;
+    c.position = Eigen::Vector3d(0, 0, 1e-160);
+    const char* why = "";
+    EXPECT_FALSE(lct::toCameraKey(c, &why).ok());
+    EXPECT_NE(std::string(why).find("closer than 1e-150"), std::string::npos) << why;
+  }
+  // SetMethod clamped 7 to CameraMatrix and -3 to FocalFrame, returning 1.
+  EXPECT_EQ(interpolator->SetMethod(7), 0);
+  EXPECT_NE(errors->Last.find("SetMethod(7): outside [0, 1]"), std::string::npos) << errors->Last;
+  EXPECT_EQ(interpolator->GetMethod(), vtkCameraInterpolatorLCT::METHOD_FOCAL_FRAME);
+  expected += 1;
   // Replacing the only key by a parallel one is allowed (nothing to mix with).
   vtkNew<vtkCamera> parallel;
   parallel->ParallelProjectionOn();

@@ -118,6 +118,50 @@ TEST(CameraPathMetric, BadInputIsReported)
   EXPECT_EQ(errors->Count, 5);
 }
 
+// A degenerate camera (view up along the view direction: its view matrix has zero rows) gave a
+// straight dolly 16 % excess with status 1, and a NaN key camera was blamed on the points; a
+// path of one camera (t0 = t1) read 0 % and overwrote the last result. Each is refused now.
+TEST(CameraPathMetric, DegenerateCamerasAndEmptyIntervalsAreRefused)
+{
+  vtkNew<vtkCameraPathMetric> metric;
+  vtkNew<lct_test::ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  metric->SetPoints(cloud(4, 20, 1.0));
+  vtkNew<vtkCamera> good, alongUp, nan;
+  good->SetPosition(0, 0, 10);
+  alongUp->SetPosition(0, 0, 10);
+  alongUp->SetViewUp(0, 0, 1);
+  nan->SetPosition(0, std::nan(""), 10);
+  EXPECT_EQ(metric->AddKeyCamera(0.0, alongUp), 0);
+  EXPECT_NE(
+    errors->Last.find("AddKeyCamera at t = 0: the view up is parallel to the view direction"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_EQ(metric->AddKeyCamera(1.0, nan), 0);
+  EXPECT_NE(errors->Last.find("NaN or Inf"), std::string::npos) << errors->Last;
+  EXPECT_EQ(metric->GetNumberOfKeyCameras(), 0);
+  vtkNew<vtkCollection> cameras;
+  cameras->AddItem(good);
+  cameras->AddItem(good);
+  cameras->AddItem(alongUp);
+  EXPECT_EQ(metric->EvaluateCameras(cameras), 0);
+  EXPECT_NE(errors->Last.find("camera 2: the view up is parallel"), std::string::npos)
+    << errors->Last;
+  // A real measurement, then an empty interval: refused, the result kept.
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCamera> far;
+  far->SetPosition(4, 0, 8);
+  ASSERT_EQ(path->AddCamera(0.0, good), 1);
+  ASSERT_EQ(path->AddCamera(2.0, far), 1);
+  ASSERT_EQ(metric->EvaluateInterpolator(path, 0.0, 2.0), 1);
+  const double excess = metric->GetCameraSpaceExcess();
+  const int before = errors->Count;
+  EXPECT_EQ(metric->EvaluateInterpolator(path, 1.0, 1.0), 0);
+  EXPECT_EQ(errors->Count, before + 1);
+  EXPECT_NE(errors->Last.find("one camera is no path"), std::string::npos) << errors->Last;
+  EXPECT_EQ(metric->GetCameraSpaceExcess(), excess);
+}
+
 TEST(CameraPathMetric, LctPathsMoveThePointsLessThanVtkCameraInterpolator)
 {
   // Random key pairs turning up to 90 degrees about the focal point, with zoom: the mean excess

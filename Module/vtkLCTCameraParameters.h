@@ -1,0 +1,47 @@
+/**
+ * @file    vtkLCTCameraParameters.h
+ * @brief   (private to the module) a vtkCamera's parameters as lct::CameraParameters and back,
+ *          so that every class judges a camera by the same lct::toCameraKey checks
+ */
+#ifndef vtkLCTCameraParameters_h
+#define vtkLCTCameraParameters_h
+
+#include "lct/CameraKey.h"
+
+#include "vtkCamera.h"
+
+namespace vtkLCTCamera
+{
+
+/// Everything lct::toCameraKey judges and the interpolators interpolate.
+inline lct::CameraParameters FromVtk(vtkCamera* camera)
+{
+  lct::CameraParameters c;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.focalPoint.data());
+  camera->GetViewUp(c.viewUp.data());
+  c.parallelProjection = camera->GetParallelProjection() != 0;
+  c.viewAngle = camera->GetViewAngle();
+  c.parallelScale = camera->GetParallelScale();
+  camera->GetWindowCenter(c.windowCenter.data());
+  camera->GetViewShear(c.viewShear.data());
+  camera->GetClippingRange(c.clippingRange.data());
+  return c;
+}
+
+inline void ToVtk(const lct::CameraParameters& c, vtkCamera* camera)
+{
+  camera->SetFocalPoint(c.focalPoint.data());
+  camera->SetPosition(c.position.data());
+  camera->SetViewUp(c.viewUp.data());
+  camera->SetParallelProjection(c.parallelProjection);
+  camera->SetParallelScale(c.parallelScale);
+  camera->SetViewAngle(c.viewAngle);
+  camera->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);
+  camera->SetViewShear(c.viewShear[0], c.viewShear[1], c.viewShear[2]);
+  camera->SetClippingRange(c.clippingRange[0], c.clippingRange[1]);
+}
+
+} // namespace vtkLCTCamera
+
+#endif
