@@ -232,8 +232,8 @@ public:
   /**
    * Spline type only: limit the Catmull-Rom tangent at each key so that the curve does not
    * overshoot where the motion slows down or stops at a key (Fritsch & Carlson's bound, 3 times
-   * the slower neighbouring secant, on the translation, rotation and stretch parts of the log
-   * step; lct/MonotoneTangents.h). Default on: keys 0, 179.9 and 180 degrees one time unit apart
+   * the slower neighbouring secant, on the translation and the linear (rotation and stretch)
+   * parts of the log step; lct/MonotoneTangents.h). Default on: keys 0, 179.9 and 180 degrees one time unit apart
    * then stay below 180 degrees (plain Catmull-Rom swings 11 degrees past), and on motion capture
    * the mean and max errors are at or below Linear's (README, "Real motion capture"). Every key
    * is still reproduced at its time and the curve stays C1; off gives plain Catmull-Rom.

@@ -1,5 +1,6 @@
 #include "lct/MonotoneTangents.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lct
@@ -15,15 +16,28 @@ KeyTangent monotoneTangent(
   {
     return catmullRom;
   }
-  // The speed of each part (translation, rotation, stretch) before and after the key, made
-  // unit-free by the part's own scale (stableNorm: steps near the double range do not overflow).
-  constexpr int kStart[] = { 0, 3, 6 };
-  constexpr int kSize[] = { 3, 3, 6 };
+  // The speed of each part before and after the key, made unit-free by the part's own scale
+  // (stableNorm: steps near the double range do not overflow). The parts are the translation
+  // (a length) and the linear part, rotation and stretch together (both logs, without units: a
+  // 1e-6 stretch beside a turn of a radian is negligible, as it is to the eye). A part whose steps
+  // are at round-off level for the steps (1e-12 of their largest entry) is left out: unit-free,
+  // the 1e-16 a MatrixLog leaves in the translation of a pure turn, or a 1e-15 translation, would
+  // weigh as much as the turn. (A path of translations alone keeps them at any size.)
+  constexpr int kStart[] = { 0, 3 };
+  constexpr int kSize[] = { 3, 9 };
+  const double roundOff =
+    1e-12 * std::max(previous.cwiseAbs().maxCoeff(), next.cwiseAbs().maxCoeff());
   double before2 = 0.0, after2 = 0.0;
-  for (int g = 0; g < 3; ++g)
+  for (int g = 0; g < 2; ++g)
   {
-    const double before = previous.segment(kStart[g], kSize[g]).stableNorm() / hPrevious;
-    const double after = next.segment(kStart[g], kSize[g]).stableNorm() / hNext;
+    const double stepBefore = previous.segment(kStart[g], kSize[g]).stableNorm();
+    const double stepAfter = next.segment(kStart[g], kSize[g]).stableNorm();
+    if (!(std::max(stepBefore, stepAfter) > roundOff))
+    {
+      continue;
+    }
+    const double before = stepBefore / hPrevious;
+    const double after = stepAfter / hNext;
     const double scale = before + after;
     if (scale > 0.0)
     {

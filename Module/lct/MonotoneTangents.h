@@ -14,8 +14,10 @@
  * to the secant vectors of the log steps at a key (x[k +- 1] - x[k] = log(K_k^-1 K_(k +- 1)),
  * in the key's own frame): it is that harmonic mean where they are parallel, 0 where they are
  * opposite, |m| <= 2 min(|d-|, |d+|) always, and equal to their mean where the speeds agree.
- * The speeds combine the translation, rotation and stretch parts of the logs, each made
- * unit-free by its own scale |d-| + |d+|. The tangent is a combination of the two secants
+ * The speeds combine the translation and the linear part (rotation and stretch, both unit-free
+ * logs) of the logs, each made unit-free by its own scale |d-| + |d+|; a part whose steps are at
+ * round-off level (1e-12 of the steps' largest entry) is left out, so that noise does
+ * not steer the tangent. The tangent is a combination of the two secants
  * (lct::KeyTangent), so a curve point is still ONE weighted combination of the keys (then one
  * exp); every key is reproduced and the curve is C1 (a key's tangent is its own, the same on
  * both of its segments).
