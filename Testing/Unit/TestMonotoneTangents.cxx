@@ -292,7 +292,8 @@ TEST(MonotoneTangents, RoundOffInAStillPartDoesNotSteerTheCurve)
   }
   // Evenly spaced turns: every tangent rule gives Catmull-Rom's, -105 degrees at t = 1.5.
   const std::vector<double> even = { 0.0, 170.0, 340.0, 510.0 };
-  for (const int p : { vtkTransformInterpolatorLCT::POLAR, vtkTransformInterpolatorLCT::MATRIX_LOG })
+  for (const int p :
+    { vtkTransformInterpolatorLCT::POLAR, vtkTransformInterpolatorLCT::MATRIX_LOG })
   {
     EXPECT_NEAR(angleAt(p, 0.0, 1.5, even, -100.0), -105.0, 1e-9) << p;
   }
