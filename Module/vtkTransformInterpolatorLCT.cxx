@@ -33,6 +33,11 @@ vtkStandardNewMacro(vtkTransformInterpolatorLCT);
 
 namespace
 {
+/// Why ConsistentRotation and MatrixLog exclude each other.
+constexpr const char* kConsistentRotationNeedsPolar =
+  "ConsistentRotation continues each key's rotation on the branch of the previous key's, which "
+  "only the Polar parametrisation has (MatrixLog's logs are principal: a spin of 0, 170, 340, "
+  "510 degrees would turn back the short way)";
 using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
 
 struct Key
@@ -777,6 +782,12 @@ int vtkTransformInterpolatorLCT::SetParametrisation(int parametrisation)
     return 1;
   }
   const lct::Parametrisation p = toCore(parametrisation);
+  if (parametrisation == MATRIX_LOG && this->ConsistentRotation)
+  {
+    vtkErrorMacro(<< "SetParametrisation(MatrixLog): " << kConsistentRotationNeedsPolar
+                  << " (ConsistentRotationOff() first); unchanged.");
+    return 0;
+  }
   Refusal refusal;
   if (!this->Internal->Validate(p, this->InterpolationType, this->ConsistentRotation != 0, refusal))
   {
@@ -819,6 +830,12 @@ int vtkTransformInterpolatorLCT::SetConsistentRotation(vtkTypeBool consistentRot
   if (consistentRotation == this->ConsistentRotation)
   {
     return 1;
+  }
+  if (consistentRotation && this->Parametrisation == MATRIX_LOG)
+  {
+    vtkErrorMacro(<< "SetConsistentRotation(on): " << kConsistentRotationNeedsPolar
+                  << " (SetParametrisationToPolar() first); unchanged.");
+    return 0;
   }
   Refusal refusal;
   if ((consistentRotation != 0) != (this->ConsistentRotation != 0) &&

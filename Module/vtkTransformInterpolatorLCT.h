@@ -29,7 +29,9 @@
  * taken on the rotation branch nearest to the previous key's (Kaji & Ochiai Algorithm 1), so a
  * key sequence that spins (0, 170, 340, 510 degrees) keeps spinning instead of taking the short
  * way between keys. Meant for spins: over hundreds of keys the absolute rotation vectors wind up
- * far from the identity, where log-space blending distorts (measured on motion capture).
+ * far from the identity, where log-space blending distorts (measured on motion capture). Polar
+ * only: MatrixLog's logs are principal, so SetConsistentRotation(on) in MatrixLog, and
+ * SetParametrisation(MatrixLog) with it on, are refused.
  *
  * Keys are copied when added; an AddTransform at an existing time replaces that key (as VTK
  * does). Each key is validated on its own (finite, affine, det > 0, condition number up to 1e13,
