@@ -132,6 +132,7 @@ bool vtkTransformBasisLCT::Commit(const Candidate& candidate, const char* caller
   *this->Internal = next;
   this->Parametrisation = candidate.Parametrisation;
   this->RankTolerance = candidate.RankTolerance;
+  this->MaximumRank = candidate.MaximumRank;
   this->Modified();
   return true;
 }
@@ -275,7 +276,6 @@ int vtkTransformBasisLCT::SetBasisFromExamples(vtkCollection* examples, int cent
   next.Sources.clear();
   next.FromExamples = true;
   next.Centred = centred != 0;
-  next.MaximumRank = this->MaximumRank;
   for (int i = 0; i < examples->GetNumberOfItems(); ++i)
   {
     vtkObject* item = examples->GetItemAsObject(i);
@@ -550,6 +550,25 @@ void vtkTransformBasisLCT::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 int vtkTransformBasisLCT::SetMaximumRank(int value)
 {
-  return vtkLCTCheckedSet::Set(
-    this, "MaximumRank", this->MaximumRank, value, static_cast<int>(0), static_cast<int>(12));
+  if (!vtkLCTCheckedSet::InRange(
+        this, "MaximumRank", this->MaximumRank, value, static_cast<int>(0), static_cast<int>(12)))
+  {
+    return 0;
+  }
+  if (value == this->MaximumRank)
+  {
+    return 1;
+  }
+  // A basis from examples is analysed again, as for SetRankTolerance: the basis always reflects
+  // the settings GetMaximumRank reports (it kept the rank in force when the examples were set).
+  Candidate next = this->Internal->Made;
+  next.MaximumRank = value;
+  if (next.FromExamples)
+  {
+    return this->Commit(next, "SetMaximumRank") ? 1 : 0;
+  }
+  this->Internal->Made.MaximumRank = value;
+  this->MaximumRank = value;
+  this->Modified();
+  return 1;
 }

@@ -115,7 +115,8 @@ public:
   ///@{
   /**
    * For SetBasisFromExamples: keep at most this many directions (0, the default: all above
-   * the rank tolerance).
+   * the rank tolerance). Changing it re-analyses a basis made from examples (as SetRankTolerance
+   * does); 0 with an error, unchanged, when that fails or the value is outside [0, 12].
    */
   virtual int SetMaximumRank(int value);
   int GetMaximumRankMinValue() { return 0; }

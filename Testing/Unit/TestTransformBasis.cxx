@@ -185,9 +185,19 @@ TEST(vtkTransformBasisLCT, BasisFromExamplesConstrainsTransforms)
   ASSERT_EQ(w.basis->GetOrigin(origin), 1);
   EXPECT_NEAR(fromVtk(origin)(0, 3), 0.0, 1e-12); // the mean translation of -1, 0, 1
   // MaximumRank keeps the strongest direction only.
+  const int all = w.basis->GetNumberOfBasisTransforms();
+  ASSERT_GT(all, 1);
   w.basis->SetMaximumRank(1);
   ASSERT_EQ(w.basis->SetBasisFromExamples(examples, 1), 1);
   EXPECT_EQ(w.basis->GetNumberOfBasisTransforms(), 1);
+  // Changing it re-analyses the examples (SetRankTolerance re-analysed with the rank in force
+  // when they were set, and SetMaximumRank not at all: GetMaximumRank described another basis).
+  ASSERT_EQ(w.basis->SetMaximumRank(0), 1);
+  EXPECT_EQ(w.basis->GetNumberOfBasisTransforms(), all);
+  ASSERT_EQ(w.basis->SetMaximumRank(1), 1);
+  ASSERT_EQ(w.basis->SetRankTolerance(1e-6), 1);
+  EXPECT_EQ(w.basis->GetNumberOfBasisTransforms(), 1);
+  EXPECT_EQ(w.basis->GetMaximumRank(), 1);
   EXPECT_EQ(w.errors->Count, 0);
 }
 
