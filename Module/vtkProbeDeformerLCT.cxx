@@ -183,7 +183,13 @@ int vtkProbeDeformerLCT::AddProbe(vtkObject* current, vtkObject* rest)
   p.Current = current;
   p.Rest = rest;
   this->Internal->Probes.push_back(p);
-  this->Internal->History.clear();
+  // The other probes keep their rotation logs (clearing them snapped a 3 pi twist back to pi);
+  // the new one has none yet, so its first log is the principal one.
+  std::vector<Eigen::Vector3d>& history = this->Internal->History;
+  if (history.size() + 1 == this->Internal->Probes.size())
+  {
+    history.push_back(Eigen::Vector3d::Zero());
+  }
   this->Modified();
   return static_cast<int>(this->Internal->Probes.size()) - 1;
 }
@@ -549,7 +555,9 @@ int vtkProbeDeformerLCT::RequestData(
   output->GetCellData()->PassData(input->GetCellData());
   if (inPoints)
   {
-    const int type = inPoints->GetDataType() == VTK_DOUBLE ? VTK_DOUBLE : VTK_FLOAT;
+    // Float points stay float; any other type (double, and integer points, which a deformation
+    // moves off the integers) is blended and stored as double.
+    const int type = inPoints->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE;
     outPoints->SetDataType(type);
     outPoints->SetNumberOfPoints(points);
     vtkPointData* pd = input->GetPointData();
@@ -586,14 +594,19 @@ int vtkProbeDeformerLCT::RequestData(
       c.isNormal = isNormal;
       carried.push_back(c);
       carriedOut.push_back(out);
-      output->GetPointData()->AddArray(out);
+      // The attributes replace the input's copy in place (AddArray first appended an unnamed
+      // one beside it: the output listed the normals twice).
       if (a == pd->GetNormals())
       {
         output->GetPointData()->SetNormals(out);
       }
-      if (a == pd->GetVectors())
+      else if (a == pd->GetVectors())
       {
         output->GetPointData()->SetVectors(out);
+      }
+      else
+      {
+        output->GetPointData()->AddArray(out);
       }
       return true;
     };
@@ -622,7 +635,8 @@ int vtkProbeDeformerLCT::RequestData(
     {
       return fail();
     }
-    // Points of another type than float or double are blended as double.
+    // Points of another type than float or double are converted to double (type is VTK_DOUBLE
+    // for them): the buffer read below must be of `type`.
     vtkSmartPointer<vtkDataArray> pointData = inPoints->GetData();
     if (pointData->GetDataType() != type)
     {
@@ -713,15 +727,16 @@ int vtkProbeDeformerLCT::RequestData(
     output->SetPoints(outPoints);
   }
 
-  // Success: remember the rotation logs and this output.
-  in.History.resize(n);
-  for (int i = 0; i < n; ++i)
+  // Success: remember the (Polar) rotation logs and this output. Another blend mode has no
+  // Polar logs to remember and leaves the history as it was (it cleared it, so one look at
+  // Linear snapped a 3 pi twist back to pi when Polar came back).
+  if (this->BlendMode == POLAR)
   {
-    in.History[i] = lct::rotationPart(prepared.set.probes[i].logs);
-  }
-  if (this->BlendMode != POLAR)
-  {
-    in.History.clear();
+    in.History.resize(n);
+    for (int i = 0; i < n; ++i)
+    {
+      in.History[i] = lct::rotationPart(prepared.set.probes[i].logs);
+    }
   }
   in.LastOutput.Remember(output);
   return 1;

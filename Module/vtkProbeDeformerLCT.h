@@ -38,9 +38,12 @@
  * the one nearest the log used at the previous successful execution (Kaji & Ochiai Alg. 1), so
  * a probe driven step by step through 3 pi twists by 3 pi; SetProbeRotationReference sets an
  * explicit reference instead (stateless, for pipelines that jump in time), and
- * ResetRotationHistory forgets the previous logs.
+ * ResetRotationHistory forgets the previous logs. AddProbe keeps the other probes' logs (the new
+ * probe starts from its principal log), and an execution in another blend mode leaves them as
+ * they were; RemoveAllProbes forgets them.
  *
- * Output: the input's structure and data; the points moved; the active normals and the arrays
+ * Output: the input's structure and data; the points moved (float points stay float, points of
+ * any other type, integers included, come out as double); the active normals and the arrays
  * named by AddNormalArrayName transformed by the inverse transpose of the blended linear part
  * (its cofactor matrix) and renormalised; the active vectors and the arrays named by
  * AddVectorArrayName transformed by the blended linear part. Probes at rest leave every point

@@ -1080,7 +1080,8 @@ Result<std::string> compressMotion(const SkeletalAnimation& animation,
   {
     return fail(Status::InvalidArgument, "the tolerance must be positive and finite");
   }
-  if (options.tolerance < options.inputResolution)
+  // (A non-finite resolution is an input beyond double's range, which the checks below name.)
+  if (std::isfinite(options.inputResolution) && options.tolerance < options.inputResolution)
   {
     const std::string share = metadata.height > 0.0
       ? " (" + formatNumber(100.0 * options.inputResolution / metadata.height) + " % of H)"

@@ -493,7 +493,8 @@ private:
         LCT_FUZZ_CHECK(result == 1
             ? this->Path->GetConsistentRotation() == on && this->ErrorCount() == errors
             : result == 0 && this->Path->GetConsistentRotation() == old &&
-              this->ErrorCount() > errors && !this->Keys.empty(),
+              this->ErrorCount() > errors &&
+              (!this->Keys.empty() || (on && this->MatrixLog())), // MatrixLog: Polar only
           "SetConsistentRotation(" << on << ") returned " << result);
         break;
       }

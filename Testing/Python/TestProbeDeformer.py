@@ -11,7 +11,8 @@ import unittest
 from lct_testing import ErrorRecorder
 
 from vtklct import vtkProbeDeformerLCT
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkPoints, vtkUnsignedShortArray
+from vtkmodules.vtkCommonCore import (VTK_DOUBLE, VTK_INT, VTK_LONG_LONG, VTK_SHORT, vtkDoubleArray,
+                                      vtkFloatArray, vtkPoints, vtkUnsignedShortArray)
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 from vtkmodules.vtkCommonTransforms import vtkTransform
@@ -129,6 +130,90 @@ class ProbeDeformerTest(unittest.TestCase):
         # The last valid output is kept.
         self.assertEqual(deformer.GetOutput().GetNumberOfPoints(), pd.GetNumberOfPoints())
         self.assertEqual(deformer.SetProbeRadius(0, 0.0), 0)
+
+    def test_integer_points_are_blended_as_double(self):
+        # Integer points were read through a float pointer to a double copy: (10, 0, 0) under a
+        # translation by (1, 2, 3) came out as (1, 4.56, 3), status OK.
+        for data_type in (VTK_INT, VTK_SHORT, VTK_LONG_LONG):
+            points = vtkPoints()
+            points.SetDataType(data_type)
+            for p in ((10, 0, 0), (5, 5, 5), (-3, 7, 1)):
+                points.InsertNextPoint(p)
+            mesh = vtkPolyData()
+            mesh.SetPoints(points)
+            move = vtkTransform()
+            move.Translate(1, 2, 3)
+            deformer = vtkProbeDeformerLCT()
+            deformer.AddProbe(move)
+            deformer.SetInputData(mesh)
+            deformer.Update()
+            out = deformer.GetOutput().GetPoints()
+            self.assertEqual(out.GetDataType(), VTK_DOUBLE)
+            for i, p in enumerate(((11, 2, 3), (6, 7, 8), (-2, 9, 4))):
+                self.assertEqual(out.GetPoint(i), p)
+
+    def test_rotation_history_survives_add_probe_and_other_modes(self):
+        # A probe driven through 3 pi; AddProbe (of a probe no weight uses) and one execution in
+        # Linear cleared every probe's history, and the bar snapped back from 270 to 90 degrees.
+        mesh = vtkPolyData()
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        weights = vtkDoubleArray()
+        weights.SetName("w")
+        weights.SetNumberOfComponents(2)
+        for k in range(11):
+            points.InsertNextPoint(1, 0, k)
+            weights.InsertNextTuple2(1 - k / 10, k / 10)
+        mesh.SetPoints(points)
+        mesh.GetPointData().AddArray(weights)
+        bottom, top = vtkTransform(), vtkTransform()
+        deformer = vtkProbeDeformerLCT()
+        deformer.AddProbe(bottom)
+        deformer.AddProbe(top)
+        deformer.SetWeightModeToPointData()
+        deformer.SetWeightArrayName("w")
+        deformer.SetInputData(mesh)
+        for degrees in range(0, 541, 30):
+            top.Identity()
+            top.RotateZ(degrees)
+            deformer.Update()
+
+        def middle():
+            deformer.Update()
+            p = deformer.GetOutput().GetPoint(5)
+            return p[0], p[1]
+
+        for a, b in zip(middle(), (0, -1)):  # half of 540 degrees
+            self.assertAlmostEqual(a, b, places=9)
+        deformer.AddProbe(vtkTransform())
+        for a, b in zip(middle(), (0, -1)):
+            self.assertAlmostEqual(a, b, places=9)
+        deformer.SetBlendModeToLinear()
+        deformer.Update()
+        deformer.SetBlendModeToPolar()
+        for a, b in zip(middle(), (0, -1)):
+            self.assertAlmostEqual(a, b, places=9)
+
+    def test_unnamed_normals_are_listed_once(self):
+        mesh = vtkPolyData()
+        points = vtkPoints()
+        normals = vtkFloatArray()
+        normals.SetNumberOfComponents(3)
+        for k in range(4):
+            points.InsertNextPoint(k, 0, 0)
+            normals.InsertNextTuple3(0, 0, 1)
+        mesh.SetPoints(points)
+        mesh.GetPointData().SetNormals(normals)
+        turn = vtkTransform()
+        turn.RotateX(90)
+        deformer = vtkProbeDeformerLCT()
+        deformer.AddProbe(turn)
+        deformer.SetInputData(mesh)
+        deformer.Update()
+        data = deformer.GetOutput().GetPointData()
+        self.assertEqual(data.GetNumberOfArrays(), 1)
+        n = data.GetNormals().GetTuple3(0)
+        self.assertAlmostEqual(n[1], -1.0, places=6)
 
 
 if __name__ == "__main__":
