@@ -8,6 +8,7 @@
 #include "lct/Format.h"
 #include "lct/KeyLogs.h"
 #include "lct/Keyframes.h"
+#include "lct/MonotoneTangents.h"
 #include "lct/PathTiming.h"
 #include "lct/RebuildOnce.h"
 #include "lct/ScrewMotion.h"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -160,38 +162,91 @@ struct vtkCameraInterpolatorLCT::Internals
     int InterpolationType;
     bool ConsistentRotation;
     bool ScrewMotion;
+    bool MonotoneTangents;
     int Method;
   };
 
   static Settings SettingsOf(const vtkCameraInterpolatorLCT* self)
   {
     return { self->InterpolationType, self->ConsistentRotation != 0, self->ScrewMotion != 0,
-      self->Method };
+      self->MonotoneTangents != 0, self->Method };
+  }
+
+  /// The curve weights of a camera's parts: one set for the focal frame (orientation, focal
+  /// point, screw; and the camera matrix of the CameraMatrix method), one per channel group
+  /// (lct::cameraChannelGroup). They differ only for the Spline type's monotone tangents.
+  struct CameraWeights
+  {
+    lct::CurveWeights frame;
+    lct::CurveWeights channels[lct::kCameraChannelGroupCount];
+  };
+
+  /// The monotone tangents at key k (lct/MonotoneTangents.h) from the steps to its neighbours;
+  /// Catmull-Rom's (the secant) at the end keys.
+  lct::CameraTangents MonotoneTangentsAt(const lct::KeyLogs& orientations, int k) const
+  {
+    const int n = static_cast<int>(this->Keys.size());
+    const double* times = this->Keys.times().data();
+    const lct::LogCoords* before = k > 0 ? orientations.relative(k - 1, k) : nullptr;
+    const lct::LogCoords* after = k + 1 < n ? orientations.relative(k + 1, k) : nullptr;
+    if (!before || !after)
+    {
+      lct::CameraTangents catmullRom;
+      catmullRom.frame = lct::catmullRomTangent(times, n, k);
+      std::fill(std::begin(catmullRom.channels), std::end(catmullRom.channels), catmullRom.frame);
+      return catmullRom;
+    }
+    return lct::monotoneCameraTangents(this->Keys[k - 1].Camera, this->Keys[k].Camera,
+      this->Keys[k + 1].Camera, lct::rotationPart(*before), lct::rotationPart(*after),
+      times[k] - times[k - 1], times[k + 1] - times[k]);
   }
 
   /// The curve weights at curve time t: the Spline type with the Kochanek-Bartels tangents where
-  /// a key has tension, continuity or bias (lct/PathTiming.h), else Catmull-Rom.
-  lct::CurveWeights WeightsAt(double t, int type) const
+  /// a key has tension, continuity or bias (lct/PathTiming.h), else the monotone tangents of each
+  /// part or, with `monotone` off, Catmull-Rom's.
+  CameraWeights WeightsAt(const lct::KeyLogs& orientations, double t, int type, bool monotone) const
   {
     const int n = static_cast<int>(this->Keys.size());
     const double* times = this->Keys.times().data();
     const lct::CurveScheme scheme = toScheme(type);
-    if (scheme != lct::CurveScheme::CatmullRom || n < 2)
+    CameraWeights w;
+    if (scheme != lct::CurveScheme::CatmullRom || n < 2 || !monotone)
     {
-      return lct::curveWeights(scheme, times, n, t);
+      w.frame = scheme == lct::CurveScheme::CatmullRom && n >= 2
+        ? lct::curveWeights(scheme, times, n, t,
+            lct::splineTangents(
+              times, n, lct::curveSegment(times, n, t), this->Timing,
+              [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
+              [times, n](int k) { return lct::catmullRomTangent(times, n, k); }))
+        : lct::curveWeights(scheme, times, n, t);
+      std::fill(std::begin(w.channels), std::end(w.channels), w.frame);
+      return w;
     }
-    return lct::curveWeights(scheme, times, n, t,
-      lct::splineTangents(
-        times, n, lct::curveSegment(times, n, t), this->Timing,
-        [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
-        [times, n](int k) { return lct::catmullRomTangent(times, n, k); }));
+    const int segment = lct::curveSegment(times, n, t);
+    const lct::CameraTangents start = this->MonotoneTangentsAt(orientations, segment);
+    const lct::CameraTangents end = this->MonotoneTangentsAt(orientations, segment + 1);
+    const auto weightsOf = [&](auto tangentOf) {
+      return lct::curveWeights(scheme, times, n, t,
+        lct::splineTangents(
+          times, n, segment, this->Timing,
+          [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
+          [&](int k) { return tangentOf(k == segment ? start : end); }));
+    };
+    w.frame = weightsOf([](const lct::CameraTangents& at) { return at.frame; });
+    for (int g = 0; g < lct::kCameraChannelGroupCount; ++g)
+    {
+      w.channels[g] = weightsOf([g](const lct::CameraTangents& at) { return at.channels[g]; });
+    }
+    return w;
   }
 
   /// The camera at curve time t; false, with `why`, when it is not representable.
   bool CameraAt(double t, const Settings& settings, lct::CameraParameters& out, std::string& why)
   {
     const lct::KeyLogs& orientations = this->OrientationLogs();
-    const lct::CurveWeights w = this->WeightsAt(t, settings.InterpolationType);
+    const CameraWeights parts =
+      this->WeightsAt(orientations, t, settings.InterpolationType, settings.MonotoneTangents);
+    const lct::CurveWeights& w = parts.frame;
     lct::CameraKey key;
     const lct::Status status = settings.ConsistentRotation
       ? orientations.combineAbsolute(w, key.focalFrame)
@@ -206,8 +261,16 @@ struct vtkCameraInterpolatorLCT::Internals
     for (int j = 0; j < w.count; ++j)
     {
       const lct::CameraKey& k = this->Keys[w.key[j]].Camera;
-      key.channels += w.weight[j] * k.channels;
       focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
+    }
+    for (int c = 0; c < lct::CameraKey::ChannelCount; ++c)
+    {
+      const lct::CurveWeights& channelWeights = parts.channels[lct::cameraChannelGroup(c)];
+      for (int j = 0; j < channelWeights.count; ++j)
+      {
+        key.channels[c] +=
+          channelWeights.weight[j] * this->Keys[channelWeights.key[j]].Camera.channels[c];
+      }
     }
     if (settings.ScrewMotion && !settings.ConsistentRotation)
     {
@@ -705,6 +768,7 @@ void vtkCameraInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolationType: " << types[this->InterpolationType] << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
   os << indent << "ScrewMotion: " << (this->ScrewMotion ? "On" : "Off") << "\n";
+  os << indent << "MonotoneTangents: " << (this->MonotoneTangents ? "On" : "Off") << "\n";
   os << indent << "Method: " << (this->Method == METHOD_FOCAL_FRAME ? "FocalFrame" : "CameraMatrix")
      << "\n";
   vtkLCTPathTiming::Print(os, indent, this->Internal->Timing, this->ConstantSpeed);

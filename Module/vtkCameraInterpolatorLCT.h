@@ -203,6 +203,25 @@ public:
 
   ///@{
   /**
+   * Spline type only: the tangent at each inner key without its own tension, continuity or bias
+   * is Fritsch & Butland's monotone tangent (issue #12 §3; lct/MonotoneTangents.h), as
+   * vtkTransformInterpolatorLCT's: each neighbouring step weighted by the other's speed, 0 where
+   * the motion turns back, never above twice the slower step. Each part of the camera gets its
+   * own: the focal frame (the turn and the focal point's step, unit-free each) and each channel
+   * group (distance, view angle, parallel scale, window centre, view shear, clipping range). So
+   * the curve does not overshoot where the camera slows down, stops or turns back at a key
+   * (azimuth keys 0, 179.9 and 180 degrees one time unit apart stay below 180 degrees;
+   * Catmull-Rom swings 11 degrees past), and a camera that only zooms between two keys and turns
+   * after the second does not turn back first. Keys are reproduced and the curve is C1 either
+   * way. Default on; off gives plain Catmull-Rom (the curve before issue #12 §3).
+   */
+  vtkSetMacro(MonotoneTangents, vtkTypeBool);
+  vtkGetMacro(MonotoneTangents, vtkTypeBool);
+  vtkBooleanMacro(MonotoneTangents, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Kochanek-Bartels tension, continuity and bias of the Spline type for every key without its
    * own, each in [-1, 1] (else an error, 0 returned, unchanged); applied to the log steps of the
    * focal frame and to the channels alike (lct/KochanekBartels.h). All 0 (default) is
@@ -281,6 +300,7 @@ protected:
   vtkTypeBool ConsistentRotation = false;
   int Method = METHOD_FOCAL_FRAME;
   vtkTypeBool ScrewMotion = true;
+  vtkTypeBool MonotoneTangents = true;
   vtkTypeBool ConstantSpeed = false;
   int ConstantSpeedMeasure = CONSTANT_SPEED_EYE_AND_FOCAL_POINT;
 

@@ -232,13 +232,16 @@ public:
 
   ///@{
   /**
-   * Spline type only: limit the Catmull-Rom tangent at each key so that the curve does not
-   * overshoot where the motion slows down or stops at a key (Fritsch & Carlson's bound, 3 times
-   * the slower neighbouring secant, on the translation and the linear (rotation and stretch)
-   * parts of the log step; lct/MonotoneTangents.h). Default on: keys 0, 179.9 and 180 degrees one time unit apart
-   * then stay below 180 degrees (plain Catmull-Rom swings 11 degrees past), and on motion capture
-   * the mean and max errors are at or below Linear's (README, "Real motion capture"). Every key
-   * is still reproduced at its time and the curve stays C1; off gives plain Catmull-Rom.
+   * Spline type only: the tangent at each inner key without its own tension, continuity or bias
+   * is Fritsch & Butland's monotone tangent of the log steps to its neighbours (in the key's
+   * frame; lct/MonotoneTangents.h): each step weighted by the other's speed, the speeds taken
+   * unit-free on the translation and on the linear (rotation and stretch) part. It is 0 where
+   * the motion turns back and never above twice the slower step, so the curve does not overshoot
+   * where the motion slows down or stops at a key: keys 0, 179.9 and 180 degrees one time unit
+   * apart stay below 180 degrees (plain Catmull-Rom swings 11 degrees past). On motion capture
+   * its mean error is below Linear's at every key spacing measured and its max at all but one
+   * (README, "Real motion capture"). Every key is still reproduced at its time and the curve
+   * stays C1. Default on; off gives plain Catmull-Rom.
    */
   vtkSetMacro(MonotoneTangents, vtkTypeBool);
   vtkGetMacro(MonotoneTangents, vtkTypeBool);

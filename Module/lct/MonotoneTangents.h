@@ -27,6 +27,7 @@
 
 #include "vtkLCTModule.h"
 
+#include "lct/CameraKey.h"
 #include "lct/Curves.h"
 #include "lct/LogCoords.h"
 
@@ -38,6 +39,44 @@ namespace lct
 /// finite, a log is not finite, or the key's neighbours do not move.
 VTKLCT_EXPORT KeyTangent monotoneTangent(
   const LogCoords& previous, const LogCoords& next, double hPrevious, double hNext);
+
+/// A part of a step whose norm is at most this fraction of the steps' largest entry is round-off.
+constexpr double kRoundOffPart = 1e-12;
+
+/// The same tangent from the steps' parts, each part's entries of one unit (a length; unit-free
+/// logs): `partBefore[g]`, `partAfter[g]` the Euclidean norms of part g of the steps to the
+/// previous and the next key; parts at or below `roundOff` are left out. Catmull-Rom's when a time
+/// step is not positive and finite, a norm is not finite, or no part moves. Cameras use it with
+/// their own parts (lct::monotoneCameraTangents).
+VTKLCT_EXPORT KeyTangent monotoneTangentOfParts(const double* partBefore, const double* partAfter,
+  int partCount, double roundOff, double hPrevious, double hNext);
+
+/// The channel groups of a camera key (lct/CameraKey.h) that move together and so share one
+/// tangent: the distance, the view angle, the parallel scale, the window centre, the view shear
+/// and the clipping range.
+constexpr int kCameraChannelGroupCount = 6;
+/// The group of channel c (a CameraKey::Channel).
+VTKLCT_EXPORT int cameraChannelGroup(int channel);
+
+/// The monotone tangents at a camera key: the focal frame's (its orientation and focal point,
+/// which move together, so that a screw keeps its pitch) and each channel group's.
+struct CameraTangents
+{
+  KeyTangent frame;
+  KeyTangent channels[kCameraChannelGroupCount];
+};
+
+/// The tangents at camera key `key` between `previous` and `next`, whose orientations differ
+/// from the key's by the rotation vectors `rotationBefore`, `rotationAfter` (in the key's
+/// frame). The camera's parts are interpolated each on its own (lct/CameraKey.h), so each gets
+/// its own monotone tangent: the frame's from the focal point's step (a length) and the turn (a
+/// unit-free log) as two parts, each channel group's from its own step. A camera that only zooms
+/// between two keys and turns after the second therefore does not turn back first, and one
+/// that turns, then only zooms, does not zoom the wrong way (Catmull-Rom's tangent, or one
+/// tangent for the whole camera, would).
+VTKLCT_EXPORT CameraTangents monotoneCameraTangents(const CameraKey& previous, const CameraKey& key,
+  const CameraKey& next, const Eigen::Vector3d& rotationBefore,
+  const Eigen::Vector3d& rotationAfter, double hPrevious, double hNext);
 
 } // namespace lct
 

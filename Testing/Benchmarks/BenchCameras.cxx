@@ -11,6 +11,7 @@
 #include "vtkCameraInterpolator.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
@@ -209,6 +210,21 @@ struct Quality
   }
 };
 
+/// The metric of a scene of 500 random points in the unit ball; failures are counted, not printed.
+vtkSmartPointer<vtkCameraPathMetric> sceneMetric(lct_test::RandomTransforms& random)
+{
+  vtkNew<vtkPoints> scene;
+  for (int i = 0; i < 500; ++i)
+  {
+    const Eigen::Vector3d p = random.Uniform(0.0, 1.0) * random.UnitVector();
+    scene->InsertNextPoint(p.data());
+  }
+  auto metric = vtkSmartPointer<vtkCameraPathMetric>::New();
+  metric->SetPoints(scene);
+  metric->GlobalWarningDisplayOff(); // failures are counted
+  return metric;
+}
+
 /// Hawkins & Grimm §5.1 on `pairs` random key pairs turning up to maxTurnDegrees, measured per
 /// key segment against the true keys (vtkCameraPathMetric::EvaluateSegments, 65 cameras).
 /// `vtkLerped`: VTK's path with the window centre lerped between the keys (VTK ignores it).
@@ -218,15 +234,7 @@ void experiment(double minTurnDegrees, double maxTurnDegrees, double focalSpread
   Quality& ours, Quality& screw, Quality& paper, Quality& vtk, Quality& vtkLerped)
 {
   lct_test::RandomTransforms random(93);
-  vtkNew<vtkPoints> scene;
-  for (int i = 0; i < 500; ++i)
-  {
-    const Eigen::Vector3d p = random.Uniform(0.0, 1.0) * random.UnitVector();
-    scene->InsertNextPoint(p.data());
-  }
-  vtkNew<vtkCameraPathMetric> metric;
-  metric->SetPoints(scene);
-  metric->GlobalWarningDisplayOff(); // failures are counted
+  const vtkSmartPointer<vtkCameraPathMetric> metric = sceneMetric(random);
   const double toRadians = lct_test::kPi / 180.0;
   for (int k = 0; k < pairs; ++k)
   {
@@ -257,6 +265,60 @@ void experiment(double minTurnDegrees, double maxTurnDegrees, double focalSpread
     vtkLerped.Add(metric, metric->EvaluateSegments(theirs, 1));
   }
   for (Quality* q : { &ours, &screw, &paper, &vtk, &vtkLerped })
+  {
+    q->Finish();
+  }
+}
+/// Spline flights of 4 keys at uneven times (steps 0.25-4 apart), each key turned 0-90 degrees
+/// from the one before, with the focal point, zoom and window centre of randomCamera: the
+/// default monotone tangents against Catmull-Rom (MonotoneTangentsOff) and VTK's spline.
+void splineExperiment(
+  int flights, Quality& monotone, Quality& catmullRom, Quality& vtk, Quality& vtkLerped)
+{
+  lct_test::RandomTransforms random(94);
+  const vtkSmartPointer<vtkCameraPathMetric> metric = sceneMetric(random);
+  const double toRadians = lct_test::kPi / 180.0;
+  for (int f = 0; f < flights; ++f)
+  {
+    Eigen::Vector3d direction = random.UnitVector();
+    std::vector<vtkSmartPointer<vtkCamera>> keys;
+    std::vector<double> times;
+    double t = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      keys.push_back(vtkSmartPointer<vtkCamera>::New());
+      randomCamera(
+        random, direction, k == 0 ? 0.0 : random.Uniform(0.0, 90.0) * toRadians, keys.back());
+      const double* p = keys.back()->GetDirectionOfProjection();
+      direction = -Eigen::Vector3d(p[0], p[1], p[2]);
+      times.push_back(t);
+      t += random.LogUniform(0.25, 4.0);
+    }
+    metric->RemoveAllKeyCameras();
+    for (int k = 0; k < 4; ++k)
+    {
+      metric->AddKeyCamera(times[k], keys[k]);
+    }
+    for (Quality* q : { &monotone, &catmullRom })
+    {
+      vtkNew<vtkCameraInterpolatorLCT> path;
+      path->SetMonotoneTangents(q == &monotone);
+      bool added = true;
+      for (int k = 0; k < 4; ++k)
+      {
+        added = added && path->AddCamera(times[k], keys[k]);
+      }
+      q->Add(metric, added && metric->EvaluateSegments(path));
+    }
+    vtkNew<vtkCameraInterpolator> theirs;
+    for (int k = 0; k < 4; ++k)
+    {
+      theirs->AddCamera(times[k], keys[k]);
+    }
+    vtk.Add(metric, metric->EvaluateSegments(theirs, 0));
+    vtkLerped.Add(metric, metric->EvaluateSegments(theirs, 1));
+  }
+  for (Quality* q : { &monotone, &catmullRom, &vtk, &vtkLerped })
   {
     q->Finish();
   }
@@ -318,6 +380,23 @@ int main(int argc, char** argv)
     {
       std::printf("  %-22s %-40s %10.1f %10.1f %12.2f %12.2f %9d\n", label.c_str(), name, q->camera,
         q->screen, q->leaving, q->miss, q->failures);
+    }
+  }
+  std::printf(
+    "\nSpline flights (issue #12, section 3), 100 random flights of 4 keys at uneven times "
+    "(steps 0.25-4 apart, 0-90 deg turns), the same measure:\n");
+  {
+    Quality monotone, catmullRom, vtk, vtkLerped;
+    splineExperiment(100, monotone, catmullRom, vtk, vtkLerped);
+    const std::pair<const char*, const Quality*> rows[] = {
+      { "vtkCameraInterpolatorLCT (default: monotone)", &monotone },
+      { "LCT MonotoneTangentsOff (Catmull-Rom)", &catmullRom }, { "vtkCameraInterpolator", &vtk },
+      { "vtkCameraInterpolator, window centre lerped", &vtkLerped }
+    };
+    for (const auto& [name, q] : rows)
+    {
+      std::printf("  %-22s %-45s %10.1f %10.1f %12.2f %12.2f %9d\n", "4 keys, uneven times", name,
+        q->camera, q->screen, q->leaving, q->miss, q->failures);
     }
   }
   benchmark::Shutdown();

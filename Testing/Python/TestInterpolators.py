@@ -146,6 +146,30 @@ class Issue12(unittest.TestCase):
         self.assertLessEqual(peaks[1], 180.0 + 1e-9)
         self.assertGreater(peaks[0], 185.0)  # plain Catmull-Rom overshoots
 
+    def test_camera_spline_does_not_zoom_past_a_key(self):
+        # A zoom 40 -> 20 degrees, then a turn at 20 degrees: the default (monotone tangents for
+        # each part of the camera) holds 20 degrees while it turns; Catmull-Rom zooms past it.
+        lowest = {}
+        for monotone in (1, 0):
+            path = vtkCameraInterpolatorLCT()
+            path.SetMonotoneTangents(monotone)
+            self.assertEqual(path.GetMonotoneTangents(), monotone)
+            for k, (azimuth, angle) in enumerate(((0, 40.0), (0, 20.0), (45, 20.0))):
+                c = vtkCamera()
+                a = math.radians(azimuth)
+                c.SetPosition(5 * math.cos(a), 5 * math.sin(a), 0.0)
+                c.SetViewUp(0, 0, 1)
+                c.SetViewAngle(angle)
+                self.assertEqual(path.AddCamera(float(k), c), 1)
+            out = vtkCamera()
+            angles = []
+            for s in range(401):
+                self.assertEqual(path.InterpolateCamera(2.0 * s / 400, out), 1)
+                angles.append(out.GetViewAngle())
+            lowest[monotone] = min(angles)
+        self.assertGreaterEqual(lowest[1], 20.0 - 1e-9)
+        self.assertLess(lowest[0], 19.5)
+
     def test_segment_metric_against_the_keys(self):
         from vtklct import vtkCameraPathMetric
         from vtkmodules.vtkCommonCore import vtkPoints

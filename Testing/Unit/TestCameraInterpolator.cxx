@@ -12,8 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -481,4 +483,142 @@ TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndRefusesMissi
     EXPECT_EQ(halfTurn->InterpolateCamera(i / 10.0, mid), 1) << i;
   }
   EXPECT_EQ(errors->Count, 2) << errors->Last;
+}
+
+namespace
+{
+/// Azimuth samples of `path` on [t0, t1], each unwrapped to within 180 degrees of the one before.
+std::vector<double> azimuthSamples(vtkCameraInterpolatorLCT* path, double t0, double t1)
+{
+  std::vector<double> azimuths;
+  vtkNew<vtkCamera> out;
+  for (int s = 0; s <= 2000; ++s)
+  {
+    EXPECT_EQ(path->InterpolateCamera(t0 + (t1 - t0) * s / 2000.0, out), 1);
+    double a = azimuthDegrees(out);
+    if (!azimuths.empty())
+    {
+      a = azimuths.back() + std::remainder(a - azimuths.back(), 360.0);
+    }
+    azimuths.push_back(a);
+  }
+  return azimuths;
+}
+} // namespace
+
+TEST(CameraInterpolatorLCT, SplineDoesNotOvershootWhereTheCameraSlowsDown)
+{
+  // Issue #12 §3 for cameras: azimuth keys 0, 179.9 and 180 degrees one time unit apart. The
+  // default Spline (monotone tangents) turns forward only and stops at 180; Catmull-Rom's tangent
+  // at the middle key (90 degrees per unit) swings past 180 before coming back.
+  for (const bool monotone : { true, false })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    path->SetMonotoneTangents(monotone);
+    int k = 0;
+    for (const double degrees : { 0.0, 179.9, 180.0 })
+    {
+      vtkNew<vtkCamera> key;
+      orbitKey(degrees, key);
+      ASSERT_EQ(path->AddCamera(k++, key), 1);
+    }
+    const std::vector<double> azimuths = azimuthSamples(path, 0.0, 2.0);
+    double largestDecrease = 0.0, running = -HUGE_VAL;
+    for (const double a : azimuths)
+    {
+      largestDecrease = std::max(largestDecrease, running - a);
+      running = std::max(running, a);
+    }
+    if (monotone)
+    {
+      EXPECT_LT(running, 180.0 + 1e-9);
+      EXPECT_LT(largestDecrease, 1e-9);
+      EXPECT_NEAR(azimuths[1000], 179.9, 1e-9); // the key
+    }
+    else
+    {
+      EXPECT_GT(running, 185.0); // Catmull-Rom's overshoot, so that the test can fail
+    }
+  }
+}
+
+TEST(CameraInterpolatorLCT, SplineDoesNotTurnBackBeforeATurnNorZoomAfterAZoom)
+{
+  // Each part of the camera has its own monotone tangent: a camera that only zooms between the
+  // first two keys and only turns between the last two neither turns the wrong way while it
+  // zooms nor zooms past the second key's view angle while it turns. One tangent for the whole
+  // camera (or Catmull-Rom's) moves both parts on both segments.
+  for (const bool monotone : { true, false })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    path->SetMonotoneTangents(monotone);
+    const double azimuth[] = { 0.0, 0.0, 45.0 }, angle[] = { 40.0, 20.0, 20.0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      orbitKey(azimuth[k], key);
+      key->SetViewAngle(angle[k]);
+      ASSERT_EQ(path->AddCamera(k, key), 1);
+    }
+    double largestTurn = 0.0, smallestAngle = HUGE_VAL, largestAngleAfter = 0.0;
+    vtkNew<vtkCamera> out;
+    for (int s = 0; s <= 2000; ++s)
+    {
+      const double t = 2.0 * s / 2000.0;
+      ASSERT_EQ(path->InterpolateCamera(t, out), 1);
+      if (t <= 1.0)
+      {
+        largestTurn = std::max(largestTurn, std::abs(azimuthDegrees(out)));
+      }
+      else
+      {
+        largestAngleAfter = std::max(largestAngleAfter, std::abs(out->GetViewAngle() - 20.0));
+      }
+      smallestAngle = std::min(smallestAngle, out->GetViewAngle());
+    }
+    if (monotone)
+    {
+      EXPECT_LT(largestTurn, 1e-9);
+      EXPECT_LT(largestAngleAfter, 1e-9);
+      EXPECT_GT(smallestAngle, 20.0 - 1e-9);
+    }
+    else
+    {
+      EXPECT_GT(largestTurn, 1.0);
+      EXPECT_LT(smallestAngle, 19.5);
+    }
+  }
+}
+
+TEST(CameraInterpolatorLCT, MonotoneSplineIsC1AtUnevenlySpacedRandomKeys)
+{
+  // Every parameter's velocity is the same on both sides of each inner key (central difference
+  // quotients over 1e-6 of the time step from either side agree to ~1e-4 of the step's speed).
+  const auto keys = randomKeys(7, 6);
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  for (const auto& k : keys)
+  {
+    vtkNew<vtkCamera> c;
+    apply(k, c, false);
+    ASSERT_EQ(path->AddCamera(k.t, c), 1);
+  }
+  const auto parameters = [&](double t) {
+    vtkNew<vtkCamera> out;
+    EXPECT_EQ(path->InterpolateCamera(t, out), 1);
+    out->OrthogonalizeViewUp();
+    Eigen::Matrix<double, 11, 1> p;
+    p << get3(out->GetPosition()), get3(out->GetFocalPoint()), get3(out->GetViewUp()),
+      out->GetWindowCenter()[0], std::log(out->GetViewAngle());
+    return p;
+  };
+  for (size_t k = 1; k + 1 < keys.size(); ++k)
+  {
+    const double h = 1e-6 * std::min(keys[k].t - keys[k - 1].t, keys[k + 1].t - keys[k].t);
+    const double t = keys[k].t;
+    const Eigen::Matrix<double, 11, 1> left = (parameters(t) - parameters(t - h)) / h;
+    const Eigen::Matrix<double, 11, 1> right = (parameters(t + h) - parameters(t)) / h;
+    const Eigen::Matrix<double, 11, 1> chord =
+      (parameters(keys[k + 1].t) - parameters(keys[k - 1].t)) / (keys[k + 1].t - keys[k - 1].t);
+    EXPECT_LT((left - right).norm(), 1e-3 * (1.0 + chord.norm())) << "key " << k;
+  }
 }
