@@ -99,6 +99,10 @@ struct vtkCameraInterpolatorLCT::Internals
   lct::KeyLogs CameraMatrices{ lct::Parametrisation::MatrixLog };
   lct::Status CameraMatricesStatus = lct::Status::Ok;
   std::atomic<bool> ClampReported{ false };
+  /// Each key's monotone Spline tangents, rebuilt after any change of the keys.
+  std::vector<lct::CameraTangents> KeyTangents;
+  std::atomic<bool> KeyTangentsCurrent{ false };
+
   /// The timing controls and the constant-speed table (eye and focal point: 6-D).
   lct::PathTiming Timing;
   vtkLCTPathTiming::ConstantSpeedTable<6> ConstantSpeedTable;
@@ -183,7 +187,7 @@ struct vtkCameraInterpolatorLCT::Internals
 
   /// The monotone tangents at key k (lct/MonotoneTangents.h) from the steps to its neighbours;
   /// Catmull-Rom's (the secant) at the end keys.
-  lct::CameraTangents MonotoneTangentsAt(const lct::KeyLogs& orientations, int k) const
+  lct::CameraTangents ComputeMonotoneTangents(const lct::KeyLogs& orientations, int k) const
   {
     const int n = static_cast<int>(this->Keys.size());
     const double* times = this->Keys.times().data();
@@ -204,7 +208,7 @@ struct vtkCameraInterpolatorLCT::Internals
   /// The curve weights at curve time t: the Spline type with the Kochanek-Bartels tangents where
   /// a key has tension, continuity or bias (lct/PathTiming.h), else the monotone tangents of each
   /// part or, with `monotone` off, Catmull-Rom's.
-  CameraWeights WeightsAt(const lct::KeyLogs& orientations, double t, int type, bool monotone) const
+  CameraWeights WeightsAt(const lct::KeyLogs& orientations, double t, int type, bool monotone)
   {
     const int n = static_cast<int>(this->Keys.size());
     const double* times = this->Keys.times().data();
@@ -223,8 +227,9 @@ struct vtkCameraInterpolatorLCT::Internals
       return w;
     }
     const int segment = lct::curveSegment(times, n, t);
-    const lct::CameraTangents start = this->MonotoneTangentsAt(orientations, segment);
-    const lct::CameraTangents end = this->MonotoneTangentsAt(orientations, segment + 1);
+    const std::vector<lct::CameraTangents>& tangents = this->MonotoneTangents(orientations);
+    const lct::CameraTangents& start = tangents[segment];
+    const lct::CameraTangents& end = tangents[segment + 1];
     const auto weightsOf = [&](auto tangentOf) {
       return lct::curveWeights(scheme, times, n, t,
         lct::splineTangents(
@@ -233,9 +238,25 @@ struct vtkCameraInterpolatorLCT::Internals
           [&](int k) { return tangentOf(k == segment ? start : end); }));
     };
     w.frame = weightsOf([](const lct::CameraTangents& at) { return at.frame; });
+    const auto same = [](const lct::KeyTangent& a, const lct::KeyTangent& b) {
+      return a.before == b.before && a.after == b.after;
+    };
     for (int g = 0; g < lct::kCameraChannelGroupCount; ++g)
     {
-      w.channels[g] = weightsOf([g](const lct::CameraTangents& at) { return at.channels[g]; });
+      // Parts with the same tangents share their weights (at the end keys, and for the parts
+      // that do not move, all of them): each set costs a segment search and a Hermite basis.
+      const lct::CurveWeights* shared =
+        same(start.channels[g], start.frame) && same(end.channels[g], end.frame) ? &w.frame
+                                                                                 : nullptr;
+      for (int h = 0; h < g && !shared; ++h)
+      {
+        if (same(start.channels[g], start.channels[h]) && same(end.channels[g], end.channels[h]))
+        {
+          shared = &w.channels[h];
+        }
+      }
+      w.channels[g] =
+        shared ? *shared : weightsOf([g](const lct::CameraTangents& at) { return at.channels[g]; });
     }
     return w;
   }
@@ -339,6 +360,19 @@ struct vtkCameraInterpolatorLCT::Internals
     return this->Orientations;
   }
 
+  /// Each key's monotone tangents, for the current keys (after OrientationLogs).
+  const std::vector<lct::CameraTangents>& MonotoneTangents(const lct::KeyLogs& orientations)
+  {
+    lct::rebuildOnce(this->KeyTangentsCurrent, this->Mutex, [this, &orientations] {
+      this->KeyTangents.resize(this->Keys.size());
+      for (size_t k = 0; k < this->Keys.size(); ++k)
+      {
+        this->KeyTangents[k] = this->ComputeMonotoneTangents(orientations, static_cast<int>(k));
+      }
+    });
+    return this->KeyTangents;
+  }
+
   const lct::KeyLogs& CameraMatrixLogs()
   {
     this->OrientationLogs(); // flattens the keys
@@ -418,6 +452,7 @@ struct vtkCameraInterpolatorLCT::Internals
     this->Keys.set(key);
     this->OrientationsCurrent = current;
     this->CameraMatricesCurrent = false;
+    this->KeyTangentsCurrent = false;
   }
 
   void Remove(double t)
@@ -425,6 +460,7 @@ struct vtkCameraInterpolatorLCT::Internals
     this->Keys.erase(t);
     this->OrientationsCurrent = false;
     this->CameraMatricesCurrent = false;
+    this->KeyTangentsCurrent = false;
   }
 
   /// A key at another time than t, if any (all keys share one projection type).
@@ -473,6 +509,7 @@ void vtkCameraInterpolatorLCT::Initialize()
   in.Orientations = lct::KeyLogs();
   in.OrientationsCurrent = true;
   in.CameraMatricesCurrent = false;
+  in.KeyTangentsCurrent = false;
   this->Modified();
 }
 

@@ -75,11 +75,12 @@ std::vector<double> queries(int n)
   return t;
 }
 
-void Ours(benchmark::State& state, int type)
+void Ours(benchmark::State& state, int type, bool monotone = true)
 {
   const int n = static_cast<int>(state.range(0));
   vtkNew<vtkCameraInterpolatorLCT> interpolator;
   interpolator->SetInterpolationType(type);
+  interpolator->SetMonotoneTangents(monotone);
   addKeys(n, interpolator, nullptr);
   const std::vector<double> t = queries(n);
   vtkNew<vtkCamera> out;
@@ -162,6 +163,10 @@ void Ours_Spline(benchmark::State& s)
 {
   Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE);
 }
+void Ours_SplineCatmullRom(benchmark::State& s)
+{
+  Ours(s, vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE, false);
+}
 void Vtk_Linear(benchmark::State& s)
 {
   Vtk(s, vtkCameraInterpolator::INTERPOLATION_TYPE_LINEAR);
@@ -172,6 +177,7 @@ void Vtk_Spline(benchmark::State& s)
 }
 BENCHMARK(Ours_Linear)->Arg(2)->Arg(10);
 BENCHMARK(Ours_Spline)->Arg(2)->Arg(10);
+BENCHMARK(Ours_SplineCatmullRom)->Arg(2)->Arg(10);
 BENCHMARK(Vtk_Linear)->Arg(2)->Arg(10);
 BENCHMARK(Vtk_Spline)->Arg(2)->Arg(10);
 BENCHMARK(Setters)->Arg(2)->Arg(10);
@@ -333,11 +339,11 @@ int main(int argc, char** argv)
   std::printf(
     "\nInterpolateCamera, ns per call (targets: <= 1.0x VTK spline, <= 3x VTK linear; VTK "
     "9.1's linear type returns garbage, timed anyway):\n");
-  std::printf("  %-5s %-8s %9s %12s %12s %10s %10s %11s %15s\n", "keys", "ours", "ours ns",
+  std::printf("  %-5s %-16s %9s %12s %12s %10s %10s %11s %15s\n", "keys", "ours", "ours ns",
     "VTK lin ns", "VTK spl ns", "/VTK lin", "/VTK spl", "setters ns", "math /VTK math");
   for (int n : { 2, 10 })
   {
-    for (const char* scheme : { "Linear", "Spline" })
+    for (const char* scheme : { "Linear", "Spline", "SplineCatmullRom" })
     {
       const std::string k = "/" + std::to_string(n);
       const double ours = reporter.Get(std::string("Ours_") + scheme + k);
@@ -347,7 +353,7 @@ int main(int argc, char** argv)
       if (ours > 0 && linear > 0 && spline > 0 && setters > 0)
       {
         // "math": the time each interpolator spends beyond writing the camera.
-        std::printf("  %-5d %-8s %9.1f %12.1f %12.1f %9.2fx %9.2fx %11.1f %14.2fx\n", n, scheme,
+        std::printf("  %-5d %-16s %9.1f %12.1f %12.1f %9.2fx %9.2fx %11.1f %14.2fx\n", n, scheme,
           ours, linear, spline, ours / linear, ours / spline, setters,
           (ours - setters) / (spline - setters));
       }

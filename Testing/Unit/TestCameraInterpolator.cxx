@@ -622,3 +622,32 @@ TEST(CameraInterpolatorLCT, MonotoneSplineIsC1AtUnevenlySpacedRandomKeys)
     EXPECT_LT((left - right).norm(), 1e-3 * (1.0 + chord.norm())) << "key " << k;
   }
 }
+
+TEST(CameraInterpolatorLCT, TangentsFollowKeysAddedAndRemovedAfterAnEvaluation)
+{
+  // The monotone tangents are cached per key set: a key appended, inserted or removed after an
+  // evaluation gives the curve of an interpolator built with the final keys.
+  const auto keys = randomKeys(11, 5);
+  const auto build = [&](vtkCameraInterpolatorLCT* path, std::initializer_list<int> which) {
+    for (int i : which)
+    {
+      vtkNew<vtkCamera> c;
+      apply(keys[i], c, false);
+      ASSERT_EQ(path->AddCamera(keys[i].t, c), 1);
+    }
+  };
+  vtkNew<vtkCameraInterpolatorLCT> edited, fresh;
+  vtkNew<vtkCamera> a, b;
+  build(edited, { 0, 1, 3 });
+  ASSERT_EQ(edited->InterpolateCamera(keys[1].t, a), 1);
+  build(edited, { 4, 2 }); // appended, then inserted
+  edited->RemoveCamera(keys[0].t);
+  build(fresh, { 1, 2, 3, 4 });
+  for (int s = 0; s <= 40; ++s)
+  {
+    const double t = keys[1].t + (keys[4].t - keys[1].t) * s / 40.0;
+    ASSERT_EQ(edited->InterpolateCamera(t, a), 1);
+    ASSERT_EQ(fresh->InterpolateCamera(t, b), 1);
+    EXPECT_LT(cameraDifference(a, b), 1e-12) << t;
+  }
+}
