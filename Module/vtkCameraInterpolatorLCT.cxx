@@ -261,6 +261,9 @@ struct vtkCameraInterpolatorLCT::Internals
     return w;
   }
 
+  static bool allFinite(double x) { return std::isfinite(x); }
+  static bool allFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
   /// The camera at curve time t; false, with `why`, when it is not representable.
   bool CameraAt(double t, const Settings& settings, lct::CameraParameters& out, std::string& why)
   {
@@ -277,21 +280,38 @@ struct vtkCameraInterpolatorLCT::Internals
       why = lct::describe(status);
       return false;
     }
-    key.channels.setZero();
-    Eigen::Vector3d focalPoint = Eigen::Vector3d::Zero();
-    for (int j = 0; j < w.count; ++j)
-    {
-      const lct::CameraKey& k = this->Keys[w.key[j]].Camera;
-      focalPoint += w.weight[j] * k.focalFrame.topRightCorner<3, 1>();
-    }
+    // Combined as steps from the key of largest weight (the sum of the weights being 1): where
+    // a key is very close in time to its neighbour, the Spline weights of the two are large and
+    // opposite, and their absolute values would cancel catastrophically.
+    const auto combine = [this](const lct::CurveWeights& weights, auto valueOf) {
+      const int r = weights.key[lct::KeyLogs::handOver(weights).first];
+      const auto reference = valueOf(this->Keys[r].Camera);
+      auto sum = decltype(reference)(reference);
+      for (int j = 0; j < weights.count; ++j)
+      {
+        if (weights.key[j] != r)
+        {
+          sum += weights.weight[j] * (valueOf(this->Keys[weights.key[j]].Camera) - reference);
+        }
+      }
+      if (!allFinite(sum))
+      {
+        // Steps between values beyond half the double range overflow: the weighted sum itself.
+        sum = weights.weight[0] * valueOf(this->Keys[weights.key[0]].Camera);
+        for (int j = 1; j < weights.count; ++j)
+        {
+          sum += weights.weight[j] * valueOf(this->Keys[weights.key[j]].Camera);
+        }
+      }
+      return sum;
+    };
+    Eigen::Vector3d focalPoint = combine(w, [](const lct::CameraKey& k) -> Eigen::Vector3d {
+      return k.focalFrame.topRightCorner<3, 1>();
+    });
     for (int c = 0; c < lct::CameraKey::ChannelCount; ++c)
     {
-      const lct::CurveWeights& channelWeights = parts.channels[lct::cameraChannelGroup(c)];
-      for (int j = 0; j < channelWeights.count; ++j)
-      {
-        key.channels[c] +=
-          channelWeights.weight[j] * this->Keys[channelWeights.key[j]].Camera.channels[c];
-      }
+      key.channels[c] = combine(parts.channels[lct::cameraChannelGroup(c)],
+        [c](const lct::CameraKey& k) { return k.channels[c]; });
     }
     if (settings.ScrewMotion && !settings.ConsistentRotation)
     {

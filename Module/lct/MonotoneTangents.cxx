@@ -44,6 +44,12 @@ KeyTangent monotoneTangentOfParts(const double* partBefore, const double* partAf
   {
     return catmullRom; // the neighbours are the key: every tangent is 0
   }
+  if (before == 0.0 || after == 0.0)
+  {
+    // The harmonic mean with a still side is 0. Weighting the still secant by 1 would give the
+    // same tangent, but as large opposite weights of two keys very close in time.
+    return { 0.0, 0.0 };
+  }
   // Fritsch & Butland: each secant weighted by the other's speed.
   return { after / (before + after), before / (before + after) };
 }

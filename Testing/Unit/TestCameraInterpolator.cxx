@@ -651,3 +651,40 @@ TEST(CameraInterpolatorLCT, TangentsFollowKeysAddedAndRemovedAfterAnEvaluation)
     EXPECT_LT(cameraDifference(a, b), 1e-12) << t;
   }
 }
+
+TEST(CameraInterpolatorLCT, KeysVeryCloseInTimeGiveTheirCurveNotCancellation)
+{
+  // Keys 1e-300 apart in time: the Spline weights of the close keys are then huge and opposite.
+  // Parts are combined as steps from the key of largest weight and a still side gives a zero
+  // tangent, so the curve stays between its keys (monotone data), with or without monotone
+  // tangents; as absolute sums the window centre read 1e284 with status 1.
+  for (const bool monotone : { true, false })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    path->SetMonotoneTangents(monotone);
+    const double times[] = { 0.0, 1e-300, 2e-300, 1.0 };
+    const double azimuth[] = { 0.0, 10.0, 20.0, 60.0 }, centre[] = { 0.1, 0.1, 0.1, 0.2 };
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      orbitKey(azimuth[k], key);
+      key->SetWindowCenter(centre[k], 0.0);
+      key->SetViewAngle(30.0 + 10.0 * k);
+      ASSERT_EQ(path->AddCamera(times[k], key), 1);
+    }
+    vtkNew<vtkCamera> out;
+    for (int s = 0; s <= 100; ++s)
+    {
+      const double t = s / 100.0;
+      ASSERT_EQ(path->InterpolateCamera(t, out), 1) << t;
+      EXPECT_GE(out->GetWindowCenter()[0], 0.1 - 1e-12) << t;
+      EXPECT_LE(out->GetWindowCenter()[0], 0.2 + 1e-12) << t;
+      EXPECT_NEAR(out->GetDistance(), 5.0, 1e-9) << t;
+      if (monotone && s > 0) // after the close keys: 50 to 60 degrees
+      {
+        EXPECT_GE(out->GetViewAngle(), 50.0 - 1e-9) << t;
+        EXPECT_LE(out->GetViewAngle(), 60.0 + 1e-9) << t;
+      }
+    }
+  }
+}
