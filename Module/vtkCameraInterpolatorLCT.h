@@ -150,7 +150,11 @@ public:
   ///@{
   /**
    * Keep the winding of a key sequence that turns by more than 180 degrees between keys (see
-   * vtkTransformInterpolatorLCT). Default off: turns take the short way.
+   * vtkTransformInterpolatorLCT). Default off: turns take the short way. The orientations are
+   * then blended by their absolute logs, i.e. about the world axes: the in-betweens depend on
+   * the world frame (keys turned together about the scene do not give the same path turned),
+   * and an orbit far from the identity orientation is distorted; the default relative form has
+   * neither effect. The focal point is combined linearly (ScrewMotion is ignored).
    */
   vtkSetMacro(ConsistentRotation, vtkTypeBool);
   vtkGetMacro(ConsistentRotation, vtkTypeBool);
