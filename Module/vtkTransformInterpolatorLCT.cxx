@@ -299,9 +299,10 @@ struct vtkTransformInterpolatorLCT::Internals
           return false;
         }
       }
-      const lct::LogCoords tangent =
-        (logs[0].value - logs[1].value) / (keys[hi]->Time - keys[lo]->Time);
-      const auto c = lct::exponential(signedThird * tangent, p);
+      // A third of the segment times the tangent, with the time ratio taken first (it lies in
+      // [-1/3, 1/3]): the tangent itself overflows where key times are subnormally close.
+      const double ratio = signedThird / (keys[hi]->Time - keys[lo]->Time);
+      const auto c = lct::exponential(ratio * (logs[0].value - logs[1].value), p);
       if (c)
       {
         control = keys[k]->Matrix * c.value;

@@ -481,6 +481,40 @@ TEST(TransformInterpolatorLCT, BezierReproducesKeysAndWithoutControlsMatchesTheS
   EXPECT_LT(worst, 1e-12);
 }
 
+TEST(TransformInterpolatorLCT, BezierControlsOfKeysSubnormallyCloseInTime)
+{
+  // The automatic control beside a key is exp(third of the segment x tangent); the tangent
+  // alone overflows where the neighbouring keys are 1e-310 apart in time, which refused every
+  // curve point as "NaN or Inf". Taken as the time ratio times the step, it is representable.
+  for (const double close : { 1e-300, 1e-310, 5e-324 })
+  {
+    vtkNew<vtkTransformInterpolatorLCT> bezier;
+    bezier->SetInterpolationTypeToBezier();
+    const double times[] = { 0.0, close, 1.0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkTransform> key;
+      key->RotateZ(30.0 * k);
+      key->Translate(k, 0, 0);
+      ASSERT_EQ(bezier->AddTransform(times[k], key), 1);
+    }
+    vtkNew<vtkMatrix4x4> m;
+    for (int s = 0; s <= 20; ++s)
+    {
+      ASSERT_EQ(bezier->InterpolateTransform(s / 20.0, m), 1) << close << " " << s;
+      for (int i = 0; i < 16; ++i)
+      {
+        ASSERT_TRUE(std::isfinite(m->GetElement(i / 4, i % 4)));
+      }
+    }
+    vtkNew<vtkTransform> last;
+    last->RotateZ(60.0);
+    last->Translate(2, 0, 0);
+    ASSERT_EQ(bezier->InterpolateTransform(1.0, m), 1);
+    EXPECT_LT((fromVtk(m) - fromVtk(last->GetMatrix())).cwiseAbs().maxCoeff(), 1e-12) << close;
+  }
+}
+
 TEST(TransformInterpolatorLCT, NoJumpWhereTheReferenceKeyChanges)
 {
   // The relative form depends on its reference key; where two weights cross, the hand-over
