@@ -1,9 +1,9 @@
 // Fuzz target: vtkCameraInterpolatorLCT with arbitrary key cameras and queries. Each input is a
 // sequence of AddCamera (position, focal point, view up, view angle, parallel scale, window
 // centre, view shear, clipping range, projection; new times, existing times to replace a key,
-// NaN/Inf), RemoveCamera, interpolation type (out of range too), ConsistentRotation, method
-// (FocalFrame / CameraMatrix), Initialize and the timing controls (FuzzTiming.h), interleaved
-// with InterpolateCamera.
+// NaN/Inf), RemoveCamera, interpolation type (out of range too), ConsistentRotation,
+// MonotoneTangents, method (FocalFrame / CameraMatrix), Initialize and the timing controls
+// (FuzzTiming.h), interleaved with InterpolateCamera.
 //
 // Properties: no crash, sanitizer report or hang; AddCamera accepts exactly the keys that
 // lct::toCameraKey accepts (finite time, same projection as the others) and the bookkeeping
@@ -15,6 +15,7 @@
 #include "FuzzTiming.h"
 
 #include "vtkCameraInterpolatorLCT.h"
+#include "vtkLCTCameraParameters.h" // the parameters AddCamera reads
 
 #include "lct/CameraKey.h"
 
@@ -68,22 +69,6 @@ struct CameraState
       Show(this->Values + 16, 2) + "\ndistance " + Show(this->Values + 18, 1);
   }
 };
-
-/// The parameters AddCamera reads from a vtkCamera (as vtkCameraInterpolatorLCT does).
-lct::CameraParameters ParametersOf(vtkCamera* camera)
-{
-  lct::CameraParameters c;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.focalPoint.data());
-  camera->GetViewUp(c.viewUp.data());
-  c.parallelProjection = camera->GetParallelProjection() != 0;
-  c.viewAngle = camera->GetViewAngle();
-  c.parallelScale = camera->GetParallelScale();
-  camera->GetWindowCenter(c.windowCenter.data());
-  camera->GetViewShear(c.viewShear.data());
-  camera->GetClippingRange(c.clippingRange.data());
-  return c;
-}
 
 struct ShadowKey
 {
@@ -195,7 +180,7 @@ private:
     vtkNew<vtkCamera> camera;
     this->MakeCamera(camera);
     const bool null = this->In.Int(0, 15) == 0;
-    const lct::CameraParameters p = ParametersOf(camera);
+    const lct::CameraParameters p = vtkLCTCamera::FromVtk(camera);
     const auto key = lct::toCameraKey(p);
     bool consistent = true;
     for (const auto& [time, other] : this->Keys)
@@ -402,6 +387,13 @@ private:
       case 5:
       {
         const bool on = this->In.Bool();
+        if (this->In.Int(0, 3) == 0)
+        {
+          // The Spline's tangents: monotone (default) or Catmull-Rom; either reproduces the keys.
+          LCT_FUZZ_TRACE("MonotoneTangents " << on);
+          this->Path->SetMonotoneTangents(on);
+          break;
+        }
         LCT_FUZZ_TRACE("ConsistentRotation " << on);
         this->Path->SetConsistentRotation(on);
         break;

@@ -16,6 +16,7 @@
 
 #include "vtkCameraInterpolatorLCT.h"
 #include "vtkCameraPathMetric.h"
+#include "vtkLCTCameraParameters.h" // the parameters AddCamera reads
 #include "vtkTransformInterpolatorLCT.h"
 
 #include "lct/CameraKey.h"
@@ -96,21 +97,6 @@ inline int InterpolationType(const std::string& name)
     return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
   }
   return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE;
-}
-
-inline lct::CameraParameters ParametersOf(vtkCamera* camera)
-{
-  lct::CameraParameters c;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.focalPoint.data());
-  camera->GetViewUp(c.viewUp.data());
-  c.parallelProjection = camera->GetParallelProjection() != 0;
-  c.viewAngle = camera->GetViewAngle();
-  c.parallelScale = camera->GetParallelScale();
-  camera->GetWindowCenter(c.windowCenter.data());
-  camera->GetViewShear(c.viewShear.data());
-  camera->GetClippingRange(c.clippingRange.data());
-  return c;
 }
 
 /// The checks on what a reader returned, then lct-render's use of it.
@@ -237,7 +223,7 @@ inline void RenderKeysLikeLctRender(const RenderKeys::Keys& keys)
         "interpolating the camera at t = " << t << " failed: " << errors.Last);
       continue;
     }
-    const lct::CameraParameters c = ParametersOf(camera);
+    const lct::CameraParameters c = vtkLCTCamera::FromVtk(camera);
     const bool finite = AllFinite(c.position) && AllFinite(c.focalPoint) && AllFinite(c.viewUp) &&
       std::isfinite(c.viewAngle) && std::isfinite(c.parallelScale) && AllFinite(c.windowCenter) &&
       AllFinite(c.viewShear) && AllFinite(c.clippingRange);
