@@ -32,7 +32,9 @@
  *   (probe j without an index array).
  * then normalised per point (SetNormalization): LINEAR (w / sum w, default; the sum must be
  * positive where any weight is not 0, and a point whose weights are all 0 stays put), SOFTMAX
- * (exp(w) / sum exp(w)) or NONE (as given; LINEAR blend mode then sums the matrices as given).
+ * (exp(w) / sum exp(w); every probe then has a positive weight, CUTOFF's zeros included, so a
+ * point beyond every radius moves with the probes' equal-weight blend: use LINEAR for a local
+ * influence) or NONE (as given; LINEAR blend mode then sums the matrices as given).
  *
  * Rotation branches (POLAR): with ConsistentRotation on (default) each probe's rotation log is
  * the one nearest the log used at the previous successful execution (Kaji & Ochiai Alg. 1), so
