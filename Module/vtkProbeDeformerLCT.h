@@ -110,8 +110,10 @@ public:
   ///@}
 
   /**
-   * Replace probe i (its radius and rotation reference are kept). Returns 1, or 0 with an
-   * error for an index out of range, a null current or another type.
+   * Replace probe i (its radius, rotation reference and rotation history are kept: with
+   * ConsistentRotation the new probe's log is taken nearest the replaced one's last, as when a
+   * probe is driven step by step; ResetRotationHistory starts from principal logs). Returns 1,
+   * or 0 with an error for an index out of range, a null current or another type.
    */
   int SetProbe(int i, vtkObject* current, vtkObject* rest);
 
