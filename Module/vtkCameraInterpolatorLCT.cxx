@@ -176,13 +176,11 @@ struct vtkCameraInterpolatorLCT::Internals
       self->MonotoneTangents != 0, self->Method };
   }
 
-  /// The curve weights of a camera's parts: one set for the focal frame (orientation, focal
-  /// point, screw; and the camera matrix of the CameraMatrix method), one per channel group
-  /// (lct::cameraChannelGroup). They differ only for the Spline type's monotone tangents.
+  /// The curve weights of each part of a camera (lct::CameraPart: orientation, focal point and
+  /// screw, channel groups). They differ only for the Spline type's monotone tangents.
   struct CameraWeights
   {
-    lct::CurveWeights frame;
-    lct::CurveWeights channels[lct::kCameraChannelGroupCount];
+    lct::CurveWeights part[lct::CameraPartCount];
   };
 
   /// The monotone tangents at key k (lct/MonotoneTangents.h) from the steps to its neighbours;
@@ -196,8 +194,8 @@ struct vtkCameraInterpolatorLCT::Internals
     if (!before || !after)
     {
       lct::CameraTangents catmullRom;
-      catmullRom.frame = lct::catmullRomTangent(times, n, k);
-      std::fill(std::begin(catmullRom.channels), std::end(catmullRom.channels), catmullRom.frame);
+      std::fill(std::begin(catmullRom.part), std::end(catmullRom.part),
+        lct::catmullRomTangent(times, n, k));
       return catmullRom;
     }
     return lct::monotoneCameraTangents(this->Keys[k - 1].Camera, this->Keys[k].Camera,
@@ -216,47 +214,42 @@ struct vtkCameraInterpolatorLCT::Internals
     CameraWeights w;
     if (scheme != lct::CurveScheme::CatmullRom || n < 2 || !monotone)
     {
-      w.frame = scheme == lct::CurveScheme::CatmullRom && n >= 2
+      const lct::CurveWeights all = scheme == lct::CurveScheme::CatmullRom && n >= 2
         ? lct::curveWeights(scheme, times, n, t,
             lct::splineTangents(
               times, n, lct::curveSegment(times, n, t), this->Timing,
               [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
               [times, n](int k) { return lct::catmullRomTangent(times, n, k); }))
         : lct::curveWeights(scheme, times, n, t);
-      std::fill(std::begin(w.channels), std::end(w.channels), w.frame);
+      std::fill(std::begin(w.part), std::end(w.part), all);
       return w;
     }
     const int segment = lct::curveSegment(times, n, t);
     const std::vector<lct::CameraTangents>& tangents = this->MonotoneTangents(orientations);
     const lct::CameraTangents& start = tangents[segment];
     const lct::CameraTangents& end = tangents[segment + 1];
-    const auto weightsOf = [&](auto tangentOf) {
-      return lct::curveWeights(scheme, times, n, t,
-        lct::splineTangents(
-          times, n, segment, this->Timing,
-          [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
-          [&](int k) { return tangentOf(k == segment ? start : end); }));
-    };
-    w.frame = weightsOf([](const lct::CameraTangents& at) { return at.frame; });
     const auto same = [](const lct::KeyTangent& a, const lct::KeyTangent& b) {
       return a.before == b.before && a.after == b.after;
     };
-    for (int g = 0; g < lct::kCameraChannelGroupCount; ++g)
+    for (int p = 0; p < lct::CameraPartCount; ++p)
     {
       // Parts with the same tangents share their weights (at the end keys, and for the parts
       // that do not move, all of them): each set costs a segment search and a Hermite basis.
-      const lct::CurveWeights* shared =
-        same(start.channels[g], start.frame) && same(end.channels[g], end.frame) ? &w.frame
-                                                                                 : nullptr;
-      for (int h = 0; h < g && !shared; ++h)
+      int shared = -1;
+      for (int q = 0; q < p && shared < 0; ++q)
       {
-        if (same(start.channels[g], start.channels[h]) && same(end.channels[g], end.channels[h]))
+        if (same(start.part[p], start.part[q]) && same(end.part[p], end.part[q]))
         {
-          shared = &w.channels[h];
+          shared = q;
         }
       }
-      w.channels[g] =
-        shared ? *shared : weightsOf([g](const lct::CameraTangents& at) { return at.channels[g]; });
+      w.part[p] = shared >= 0
+        ? w.part[shared]
+        : lct::curveWeights(scheme, times, n, t,
+            lct::splineTangents(
+              times, n, segment, this->Timing,
+              [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; },
+              [&](int k) { return (k == segment ? start : end).part[p]; }));
     }
     return w;
   }
@@ -270,7 +263,7 @@ struct vtkCameraInterpolatorLCT::Internals
     const lct::KeyLogs& orientations = this->OrientationLogs();
     const CameraWeights parts =
       this->WeightsAt(orientations, t, settings.InterpolationType, settings.MonotoneTangents);
-    const lct::CurveWeights& w = parts.frame;
+    const lct::CurveWeights& w = parts.part[lct::CameraOrientation];
     lct::CameraKey key;
     const lct::Status status = settings.ConsistentRotation
       ? orientations.combineAbsolute(w, key.focalFrame)
@@ -305,17 +298,19 @@ struct vtkCameraInterpolatorLCT::Internals
       }
       return sum;
     };
-    Eigen::Vector3d focalPoint = combine(w, [](const lct::CameraKey& k) -> Eigen::Vector3d {
-      return k.focalFrame.topRightCorner<3, 1>();
-    });
+    const lct::CurveWeights& focalWeights = parts.part[lct::CameraFocalPoint];
+    Eigen::Vector3d focalPoint =
+      combine(focalWeights, [](const lct::CameraKey& k) -> Eigen::Vector3d {
+        return k.focalFrame.topRightCorner<3, 1>();
+      });
     for (int c = 0; c < lct::CameraKey::ChannelCount; ++c)
     {
-      key.channels[c] = combine(parts.channels[lct::cameraChannelGroup(c)],
+      key.channels[c] = combine(parts.part[lct::cameraChannelPart(c)],
         [c](const lct::CameraKey& k) { return k.channels[c]; });
     }
     if (settings.ScrewMotion && !settings.ConsistentRotation)
     {
-      focalPoint = this->ScrewFocalPoint(orientations, w);
+      focalPoint = this->ScrewFocalPoint(orientations, focalWeights);
     }
     key.focalFrame.topRightCorner<3, 1>() = focalPoint;
     key.parallelProjection = this->Keys[0].Camera.parallelProjection;

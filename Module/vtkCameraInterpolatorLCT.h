@@ -207,17 +207,23 @@ public:
 
   ///@{
   /**
-   * Spline type only: the tangent at each inner key without its own tension, continuity or bias
-   * is Fritsch & Butland's monotone tangent (issue #12 §3; lct/MonotoneTangents.h), as
-   * vtkTransformInterpolatorLCT's: each neighbouring step weighted by the other's speed, 0 where
-   * the motion turns back, never above twice the slower step. Each part of the camera gets its
-   * own: the focal frame (the turn and the focal point's step, unit-free each) and each channel
-   * group (distance, view angle, parallel scale, window centre, view shear, clipping range). So
-   * the curve does not overshoot where the camera slows down, stops or turns back at a key
-   * (azimuth keys 0, 179.9 and 180 degrees one time unit apart stay below 180 degrees;
-   * Catmull-Rom swings 11 degrees past), and a camera that only zooms between two keys and turns
-   * after the second does not turn back first. Keys are reproduced and the curve is C1 either
-   * way. Default on; off gives plain Catmull-Rom (the curve before issue #12 §3).
+   * Spline type only: the tangent at each inner key is Fritsch & Butland's monotone tangent
+   * (issue #12 §3; lct/MonotoneTangents.h), as vtkTransformInterpolatorLCT's: each neighbouring
+   * step weighted by the other's speed, 0 where the motion stops or turns back, never above
+   * twice the slower step. Each part of the camera gets its own, from its own steps: the
+   * orientation, the focal point (and screw), and each channel group (distance, view angle,
+   * parallel scale, window centre, view shear, clipping range). So no part overshoots where it
+   * slows down, stops or turns back at a key, whatever the others do: azimuth keys 0, 179.9 and
+   * 180 degrees one time unit apart stay below 180 degrees (Catmull-Rom swings 13 degrees past),
+   * a camera that only zooms between two keys and turns after the second does not turn back
+   * first, one that orbits, then only pans, does not orbit past. The tangents do not depend on
+   * the scene's scale. Keys are reproduced and the curve is C1 either way. Default on; off gives
+   * plain Catmull-Rom (the curve before issue #12 §3).
+   *
+   * Not monotone: keys with Kochanek-Bartels tension, continuity or bias (per path: every key;
+   * SetKeyTensionContinuityBias: that key) take KB's tangents, which are Catmull-Rom's shaped and
+   * may overshoot; the CameraMatrix method combines the whole matrix with the orientation's
+   * weights, so its intrinsics may overshoot.
    */
   vtkSetMacro(MonotoneTangents, vtkTypeBool);
   vtkGetMacro(MonotoneTangents, vtkTypeBool);

@@ -238,7 +238,7 @@ public:
    * unit-free on the translation and on the linear (rotation and stretch) part. It is 0 where
    * the motion turns back and never above twice the slower step, so the curve does not overshoot
    * where the motion slows down or stops at a key: keys 0, 179.9 and 180 degrees one time unit
-   * apart stay below 180 degrees (plain Catmull-Rom swings 11 degrees past). On motion capture
+   * apart stay below 180 degrees (plain Catmull-Rom swings 13 degrees past). On motion capture
    * its mean error is below Linear's at every key spacing measured and its max at all but one
    * (README, "Real motion capture"). Every key is still reproduced at its time and the curve
    * stays C1. Default on; off gives plain Catmull-Rom.

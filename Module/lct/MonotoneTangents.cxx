@@ -15,10 +15,11 @@ KeyTangent monotoneTangentOfParts(const double* partBefore, const double* partAf
   {
     return catmullRom;
   }
-  // The speed of each part before and after the key, made unit-free by the part's own scale. A
-  // part whose steps are at round-off level for the steps is left out: unit-free, the 1e-16 a
+  // The speed of each part before and after the key, made unit-free by the part's own scale
+  // (its share of the two). A step at round-off level counts as still: unit-free, the 1e-16 a
   // MatrixLog leaves in the translation of a pure turn, or a 1e-15 translation, would weigh as
-  // much as the turn. (A path of translations alone keeps them at any size.)
+  // much as the turn, and over a time step of 1e-300 as a huge speed. (A path of translations
+  // alone keeps them at any size.)
   double before2 = 0.0, after2 = 0.0;
   for (int g = 0; g < partCount; ++g)
   {
@@ -26,17 +27,32 @@ KeyTangent monotoneTangentOfParts(const double* partBefore, const double* partAf
     {
       return catmullRom;
     }
-    if (!(std::max(partBefore[g], partAfter[g]) > roundOff))
+    const double stepBefore = partBefore[g] > roundOff ? partBefore[g] : 0.0;
+    const double stepAfter = partAfter[g] > roundOff ? partAfter[g] : 0.0;
+    if (stepBefore == 0.0 && stepAfter == 0.0)
     {
       continue;
     }
-    const double before = partBefore[g] / hPrevious;
-    const double after = partAfter[g] / hNext;
+    const double before = stepBefore / hPrevious;
+    const double after = stepAfter / hNext;
     const double scale = before + after;
-    if (scale > 0.0)
+    if (std::isfinite(scale) && scale > 0.0)
     {
       before2 += (before / scale) * (before / scale);
       after2 += (after / scale) * (after / scale);
+    }
+    else
+    {
+      // A speed overflows or both underflow (time steps near the double range): the share of
+      // the speed before, 1 / (1 + after / before), from logs.
+      const double share = stepBefore == 0.0 ? 0.0
+        : stepAfter == 0.0                   ? 1.0
+                                             : 1.0 /
+          (1.0 +
+            std::exp((std::log(stepAfter) - std::log(hNext)) -
+              (std::log(stepBefore) - std::log(hPrevious))));
+      before2 += share * share;
+      after2 += (1.0 - share) * (1.0 - share);
     }
   }
   const double before = std::sqrt(before2), after = std::sqrt(after2);
@@ -72,26 +88,26 @@ KeyTangent monotoneTangent(
   return monotoneTangentOfParts(before, after, 2, roundOff, hPrevious, hNext);
 }
 
-int cameraChannelGroup(int channel)
+CameraPart cameraChannelPart(int channel)
 {
   using C = CameraKey;
   switch (channel)
   {
     case C::LogDistance:
-      return 0;
+      return CameraDistance;
     case C::LogTanHalfAngle:
-      return 1;
+      return CameraViewAngle;
     case C::LogParallelScale:
-      return 2;
+      return CameraParallelScale;
     case C::WindowCenterX:
     case C::WindowCenterY:
-      return 3;
+      return CameraWindowCenter;
     case C::ShearX:
     case C::ShearY:
     case C::ShearCenter:
-      return 4;
+      return CameraViewShear;
     default:
-      return 5; // LogNear, LogFar
+      return CameraClippingRange; // LogNear, LogFar
   }
 }
 
@@ -100,27 +116,31 @@ CameraTangents monotoneCameraTangents(const CameraKey& previous, const CameraKey
   const Eigen::Vector3d& rotationAfter, double hPrevious, double hNext)
 {
   CameraTangents tangents;
+  const auto single = [&](double before, double after, double roundOff) {
+    return monotoneTangentOfParts(&before, &after, 1, roundOff, hPrevious, hNext);
+  };
+  // Rotation logs carry ~1e-16 rad of round-off where two keys share their orientation.
+  tangents.part[CameraOrientation] =
+    single(rotationBefore.stableNorm(), rotationAfter.stableNorm(), kRoundOffPart);
   {
-    const Eigen::Vector3d focalBefore =
-      previous.focalFrame.topRightCorner<3, 1>() - key.focalFrame.topRightCorner<3, 1>();
-    const Eigen::Vector3d focalAfter =
-      next.focalFrame.topRightCorner<3, 1>() - key.focalFrame.topRightCorner<3, 1>();
-    const double before[] = { focalBefore.stableNorm(), rotationBefore.stableNorm() };
-    const double after[] = { focalAfter.stableNorm(), rotationAfter.stableNorm() };
-    const double largest =
-      std::max({ focalBefore.cwiseAbs().maxCoeff(), focalAfter.cwiseAbs().maxCoeff(),
-        rotationBefore.cwiseAbs().maxCoeff(), rotationAfter.cwiseAbs().maxCoeff() });
-    tangents.frame =
-      monotoneTangentOfParts(before, after, 2, kRoundOffPart * largest, hPrevious, hNext);
+    // In units of the key's distance, with the round-off of the coordinates.
+    const Eigen::Vector3d focal = key.focalFrame.topRightCorner<3, 1>();
+    const Eigen::Vector3d focalPrevious = previous.focalFrame.topRightCorner<3, 1>();
+    const Eigen::Vector3d focalNext = next.focalFrame.topRightCorner<3, 1>();
+    const double distance = std::exp(key.channels[CameraKey::LogDistance]);
+    const double coordinates = std::max({ focal.cwiseAbs().maxCoeff(),
+      focalPrevious.cwiseAbs().maxCoeff(), focalNext.cwiseAbs().maxCoeff() });
+    tangents.part[CameraFocalPoint] = single((focalPrevious - focal).stableNorm() / distance,
+      (focalNext - focal).stableNorm() / distance, kRoundOffPart * coordinates / distance);
   }
   const CameraKey::Channels stepBefore = previous.channels - key.channels;
   const CameraKey::Channels stepAfter = next.channels - key.channels;
-  for (int g = 0; g < kCameraChannelGroupCount; ++g)
+  for (int part = CameraDistance; part < CameraPartCount; ++part)
   {
     double largest = 0.0;
     for (int c = 0; c < CameraKey::ChannelCount; ++c)
     {
-      if (cameraChannelGroup(c) == g)
+      if (cameraChannelPart(c) == part)
       {
         largest = std::max({ largest, std::abs(stepBefore[c]), std::abs(stepAfter[c]) });
       }
@@ -131,14 +151,13 @@ CameraTangents monotoneCameraTangents(const CameraKey& previous, const CameraKey
     double before2 = 0.0, after2 = 0.0;
     for (int c = 0; c < CameraKey::ChannelCount && largest > 0.0; ++c)
     {
-      if (cameraChannelGroup(c) == g)
+      if (cameraChannelPart(c) == part)
       {
         before2 += (stepBefore[c] / largest) * (stepBefore[c] / largest);
         after2 += (stepAfter[c] / largest) * (stepAfter[c] / largest);
       }
     }
-    const double before = largest * std::sqrt(before2), after = largest * std::sqrt(after2);
-    tangents.channels[g] = monotoneTangentOfParts(&before, &after, 1, 0.0, hPrevious, hNext);
+    tangents.part[part] = single(largest * std::sqrt(before2), largest * std::sqrt(after2), 0.0);
   }
   return tangents;
 }

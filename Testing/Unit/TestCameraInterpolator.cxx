@@ -688,3 +688,89 @@ TEST(CameraInterpolatorLCT, KeysVeryCloseInTimeGiveTheirCurveNotCancellation)
     }
   }
 }
+
+namespace
+{
+/// A camera 10 from its focal point (fx, 0, 0) after `azimuth` degrees of vtkCamera::Azimuth,
+/// the whole scene scaled by s.
+void scaledKey(double s, double fx, double fy, double azimuth, vtkCamera* c)
+{
+  c->SetFocalPoint(fx * s, fy * s, 0);
+  c->SetPosition(fx * s, fy * s, 10 * s);
+  c->SetViewUp(0, 1, 0);
+  c->Azimuth(azimuth);
+  c->SetClippingRange(0.1 * s, 100 * s);
+}
+} // namespace
+
+TEST(CameraInterpolatorLCT, MonotoneSplineIsTheSamePathAtEveryScale)
+{
+  // Scaling the scene scales the path: the focal point's steps are measured in units of the
+  // distance. (Measured against the largest coordinate, the turn counted as round-off beyond
+  // 1e11 and the path at 1e20 turned 2 degrees ahead.)
+  vtkNew<vtkCamera> reference, scaled;
+  for (const double s : { 1e-15, 1e-8, 1e12, 1e20, 1e100 })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> unit, big;
+    const double fx[] = { 0, 1, 5, 5.5 }, azimuth[] = { 0, 60, 70, 100 }, times[] = { 0, 1, 2, 4 };
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<vtkCamera> a, b;
+      scaledKey(1.0, fx[k], 0, azimuth[k], a);
+      scaledKey(s, fx[k], 0, azimuth[k], b);
+      ASSERT_EQ(unit->AddCamera(times[k], a), 1);
+      ASSERT_EQ(big->AddCamera(times[k], b), 1);
+    }
+    for (int i = 0; i <= 40; ++i)
+    {
+      const double t = i / 10.0;
+      ASSERT_EQ(unit->InterpolateCamera(t, reference), 1);
+      ASSERT_EQ(big->InterpolateCamera(t, scaled), 1);
+      EXPECT_LT((get3(scaled->GetPosition()) / s - get3(reference->GetPosition())).norm(), 1e-9)
+        << "scale " << s << " t " << t;
+      EXPECT_LT((get3(scaled->GetViewUp()) - get3(reference->GetViewUp())).norm(), 1e-9)
+        << "scale " << s << " t " << t;
+    }
+  }
+}
+
+TEST(CameraInterpolatorLCT, OrbitThatStopsDoesNotOvershootWhileTheFocalPointMoves)
+{
+  // The orientation and the focal point have their own tangents: an orbit 0 -> 60 degrees that
+  // stops while the camera then pans does not swing past 60 (one tangent for the focal frame
+  // swung to 64.4), and a pan that stops while the orbit goes on does not pan past its key.
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    const double fy[] = { 0, 0, 5 }, azimuth[] = { 0, 60, 60 };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      scaledKey(1.0, 0, fy[k], azimuth[k], key);
+      ASSERT_EQ(path->AddCamera(k, key), 1);
+    }
+    vtkNew<vtkCamera> out;
+    for (int i = 0; i <= 200; ++i)
+    {
+      ASSERT_EQ(path->InterpolateCamera(i / 100.0, out), 1);
+      const Eigen::Vector3d view = get3(out->GetPosition()) - get3(out->GetFocalPoint());
+      const double degrees = std::atan2(view[0], view[2]) * 180.0 / lct_test::kPi;
+      EXPECT_LE(degrees, 60.0 + 1e-9) << i / 100.0;
+    }
+  }
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    const double fx[] = { 0, 5, 5 }, azimuth[] = { 0, 0, 30 };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      scaledKey(1.0, fx[k], 0, azimuth[k], key);
+      ASSERT_EQ(path->AddCamera(k, key), 1);
+    }
+    vtkNew<vtkCamera> out;
+    for (int i = 0; i <= 200; ++i)
+    {
+      ASSERT_EQ(path->InterpolateCamera(i / 100.0, out), 1);
+      EXPECT_LE(out->GetFocalPoint()[0], 5.0 + 1e-9) << i / 100.0;
+    }
+  }
+}
