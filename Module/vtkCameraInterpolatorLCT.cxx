@@ -299,20 +299,16 @@ struct vtkCameraInterpolatorLCT::Internals
       return sum;
     };
     const lct::CurveWeights& focalWeights = parts.part[lct::CameraFocalPoint];
-    Eigen::Vector3d focalPoint =
-      combine(focalWeights, [](const lct::CameraKey& k) -> Eigen::Vector3d {
-        return k.focalFrame.topRightCorner<3, 1>();
-      });
+    key.focalFrame.topRightCorner<3, 1>() = settings.ScrewMotion && !settings.ConsistentRotation
+      ? this->ScrewFocalPoint(orientations, focalWeights)
+      : combine(focalWeights, [](const lct::CameraKey& k) -> Eigen::Vector3d {
+          return k.focalFrame.topRightCorner<3, 1>();
+        });
     for (int c = 0; c < lct::CameraKey::ChannelCount; ++c)
     {
       key.channels[c] = combine(parts.part[lct::cameraChannelPart(c)],
         [c](const lct::CameraKey& k) { return k.channels[c]; });
     }
-    if (settings.ScrewMotion && !settings.ConsistentRotation)
-    {
-      focalPoint = this->ScrewFocalPoint(orientations, focalWeights);
-    }
-    key.focalFrame.topRightCorner<3, 1>() = focalPoint;
     key.parallelProjection = this->Keys[0].Camera.parallelProjection;
     const char* cause = "";
     const auto interpolated = lct::fromCameraKey(key, &cause);
