@@ -73,14 +73,10 @@ KeyTangent monotoneTangentOfParts(const double* partBefore, const double* partAf
 KeyTangent monotoneTangent(
   const LogCoords& previous, const LogCoords& next, double hPrevious, double hNext)
 {
-  if (!previous.allFinite() || !next.allFinite())
-  {
-    const double span = hPrevious + hNext;
-    return { hPrevious / span, hNext / span };
-  }
   // The parts are the translation (a length) and the linear part, rotation and stretch together
   // (both logs, without units: a 1e-6 stretch beside a turn of a radian is negligible, as it is
-  // to the eye); stableNorm, so that steps near the double range do not overflow.
+  // to the eye); stableNorm, so that steps near the double range do not overflow (a non-finite
+  // step gives a non-finite norm, hence Catmull-Rom's tangent).
   const double before[] = { previous.head<3>().stableNorm(), previous.tail<9>().stableNorm() };
   const double after[] = { next.head<3>().stableNorm(), next.tail<9>().stableNorm() };
   const double roundOff =
@@ -137,27 +133,21 @@ CameraTangents monotoneCameraTangents(const CameraKey& previous, const CameraKey
   const CameraKey::Channels stepAfter = next.channels - key.channels;
   for (int part = CameraDistance; part < CameraPartCount; ++part)
   {
-    double largest = 0.0;
+    // The group's steps (at most 3 channels); stableNorm, so that window centres near the double
+    // range do not overflow. A group that does not move gets Catmull-Rom's weights (its tangent
+    // is 0 whatever they are).
+    Eigen::Vector3d before = Eigen::Vector3d::Zero(), after = Eigen::Vector3d::Zero();
+    int size = 0;
     for (int c = 0; c < CameraKey::ChannelCount; ++c)
     {
       if (cameraChannelPart(c) == part)
       {
-        largest = std::max({ largest, std::abs(stepBefore[c]), std::abs(stepAfter[c]) });
+        before[size] = stepBefore[c];
+        after[size] = stepAfter[c];
+        ++size;
       }
     }
-    // The group's norms, scaled by its largest step so that window centres near the double
-    // range do not overflow; a group that does not move gets Catmull-Rom's weights (its tangent
-    // is 0 whatever they are).
-    double before2 = 0.0, after2 = 0.0;
-    for (int c = 0; c < CameraKey::ChannelCount && largest > 0.0; ++c)
-    {
-      if (cameraChannelPart(c) == part)
-      {
-        before2 += (stepBefore[c] / largest) * (stepBefore[c] / largest);
-        after2 += (stepAfter[c] / largest) * (stepAfter[c] / largest);
-      }
-    }
-    tangents.part[part] = single(largest * std::sqrt(before2), largest * std::sqrt(after2), 0.0);
+    tangents.part[part] = single(before.stableNorm(), after.stableNorm(), 0.0);
   }
   return tangents;
 }
