@@ -239,13 +239,15 @@ struct KeyTiming
 };
 
 /// The timing fields of a path (the camera, each prop): tension, continuity and bias in
-/// [-1, 1] for the keys without their own, the eases of the whole path in [0, 1] (ease_in: it
-/// starts slowly, ease_out: it ends slowly) and constant speed.
+/// [-1, 1] for the keys without their own, the spline's tangents (one of TangentNames()), the
+/// eases of the whole path in [0, 1] (ease_in: it starts slowly, ease_out: it ends slowly) and
+/// constant speed.
 struct PathTiming
 {
   double Tension = 0.0;
   double Continuity = 0.0;
   double Bias = 0.0;
+  std::string Tangents = "monotone";
   double EaseIn = 0.0;
   double EaseOut = 0.0;
   bool ConstantSpeed = false;
@@ -254,6 +256,15 @@ struct PathTiming
   /// The camera: what is measured, one of ConstantSpeedMeasures().
   std::string ConstantSpeedMeasure = "eye_and_focal_point";
 };
+
+/// The values of "tangents": the interpolators' MonotoneTangents on (Fritsch & Butland's
+/// tangents, the default: no overshoot where a path slows down or turns back) and off (plain
+/// Catmull-Rom).
+inline const std::vector<std::string>& TangentNames()
+{
+  static const std::vector<std::string> names = { "monotone", "catmull_rom" };
+  return names;
+}
 
 /// The values of the camera's constant_speed_measure, in vtkCameraInterpolatorLCT's order
 /// (CONSTANT_SPEED_EYE_AND_FOCAL_POINT, CONSTANT_SPEED_EYE, CONSTANT_SPEED_FOCAL_POINT).
@@ -443,10 +454,10 @@ vtkSmartPointer<vtkCamera> MakeCamera(CameraValues v, const std::string& path, F
   if (!(distance > 1e-12 * scale) || !(distance > 1e-150))
   {
     fail(path + " is degenerate: position and focal_point " +
-      (distance == 0.0             ? std::string("are equal")
-          : distance > 1e-12 * scale ? "are only " + Num(distance) + " apart, below 1e-150"
-                                     : "are only " + Num(distance) +
-              " apart, below 1e-12 of their magnitude"));
+      (distance == 0.0 ? std::string("are equal")
+          : distance > 1e-12 * scale
+          ? "are only " + Num(distance) + " apart, below 1e-150"
+          : "are only " + Num(distance) + " apart, below 1e-12 of their magnitude"));
   }
   // The view-up direction matters, not its length: scale by its largest entry so that tiny
   // (even denormal) vectors are judged by their direction and vtkCamera gets a normal one.
@@ -870,6 +881,10 @@ public:
         *value = this->Number(object.at(name), path + "." + name, -1.0, 1.0);
       }
     }
+    if (object.contains("tangents"))
+    {
+      out.Tangents = this->Choice(object, "tangents", path, TangentNames());
+    }
     if (object.contains("ease_in"))
     {
       out.EaseIn = this->Number(object.at("ease_in"), path + ".ease_in", 0.0, 1.0);
@@ -1130,7 +1145,7 @@ public:
         }
         this->CheckKeys(it.value(), path,
           { "keys", "interpolation", "consistent_rotation", "tension", "continuity", "bias",
-            "ease_in", "ease_out", "constant_speed", "constant_speed_point" });
+            "tangents", "ease_in", "ease_out", "constant_speed", "constant_speed_point" });
         PropTrack track;
         track.Timing = this->ReadPathTiming(it.value(), path, false);
         if (it.value().contains("interpolation"))
@@ -1171,8 +1186,8 @@ private:
   void ReadCamera(const nlohmann::json& camera, Keys& keys) const
   {
     this->CheckKeys(camera, "camera",
-      { "interpolation", "keys", "consistent_rotation", "tension", "continuity", "bias", "ease_in",
-        "ease_out", "constant_speed", "constant_speed_measure" });
+      { "interpolation", "keys", "consistent_rotation", "tension", "continuity", "bias", "tangents",
+        "ease_in", "ease_out", "constant_speed", "constant_speed_measure" });
     keys.CameraTiming = this->ReadPathTiming(camera, "camera", true);
     if (camera.contains("interpolation"))
     {

@@ -126,6 +126,9 @@ options:
                      Kochanek-Bartels tension, continuity and bias (each in [-1, 1]) of the
                      camera path and every prop path, replacing the paths' own "tension",
                      "continuity", "bias" (keys with their own keep them); spline type only
+  --tangents monotone|catmull_rom
+                     the spline's tangents on the camera path and every prop path, replacing
+                     the paths' own "tangents" (see "timing")
   --ease-in E, --ease-out E
                      ease of the camera path and every prop path (each in [0, 1]; 1: from or to
                      rest): ease-in starts slowly, ease-out ends slowly (replaces the paths' own)
@@ -163,8 +166,9 @@ array "temperature" beside it; Render.HelpExample checks that it reads):
                "direction": [0, 1, 0], "resolution": 32, "representation": "wireframe"},
        "frame": {"source": "axes", "center": [-2.5, 0, 2.5], "length": 1}}},
    "camera": {"interpolation": "spline", "consistent_rotation": false,
-              "tension": 0, "continuity": 0, "bias": 0, "ease_in": 0.5, "ease_out": 0,
-              "constant_speed": false, "constant_speed_measure": "eye_and_focal_point",
+              "tension": 0, "continuity": 0, "bias": 0, "tangents": "monotone",
+              "ease_in": 0.5, "ease_out": 0, "constant_speed": false,
+              "constant_speed_measure": "eye_and_focal_point",
               "keys": [{"time": 0, "position": [5, 3, 6], "focal_point": [0, 0.5, 0],
                         "view_up": [0, 1, 0], "view_angle": 30, "window_center": [0, 0],
                         "view_shear": [0, 0, 1], "parallel_scale": 1, "parallel": false,
@@ -175,8 +179,9 @@ array "temperature" beside it; Render.HelpExample checks that it reads):
                        {"time": 2, "position": [-5, 3, 6], "focal_point": [0, 0.5, 0],
                         "clipping_range": [0.5, 30]}]},
    "props": {"ball": {"interpolation": "spline", "consistent_rotation": false,
-                      "tension": 0, "continuity": 0, "bias": 0, "ease_in": 0, "ease_out": 0.5,
-                      "constant_speed": true, "constant_speed_point": [0, 0, 0],
+                      "tension": 0, "continuity": 0, "bias": 0, "tangents": "catmull_rom",
+                      "ease_in": 0, "ease_out": 0.5, "constant_speed": true,
+                      "constant_speed_point": [0, 0, 0],
                       "keys": [{"time": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]},
                                {"time": 2, "translate": [0, 1, 0], "rotate": [90, 0, 1, 0],
                                 "scale": [1, 1.5, 1], "shear": [0.2, 0, 0]}]}}}
@@ -197,8 +202,8 @@ fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = ms
   and matrix (16 numbers, row-major, last row 0 0 0 1) or translate = [0,0,0],
   rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0].
   Timing (see "timing" below), of the camera and of each props.NAME: tension = 0,
-  continuity = 0, bias = 0 (each in [-1, 1]), ease_in = 0, ease_out = 0 (each in [0, 1]),
-  constant_speed = false; the camera's constant_speed_measure = eye_and_focal_point (eye,
+  continuity = 0, bias = 0 (each in [-1, 1]), tangents = monotone (catmull_rom), ease_in = 0,
+  ease_out = 0 (each in [0, 1]), constant_speed = false; the camera's constant_speed_measure = eye_and_focal_point (eye,
   focal_point), a prop's constant_speed_point = [0,0,0]. Of every camera and prop key:
   tension, continuity, bias (none: the path's; any one given: the key's own, the others 0),
   ease_in = 0, ease_out = 0.
@@ -223,16 +228,19 @@ time: the frames span from the earliest key of any track (camera, each prop) to 
   flies on to t = 4). The path metric measures the camera over its own key range.
 timing: tension, continuity and bias are the Kochanek-Bartels parameters of the spline type
   (vtkKochanekSpline's, applied in log space; all 0: the default tangents), for the keys without
-  their own; every key is still reached at its time. A path's ease_in makes it start slowly,
-  ease_out end slowly (1: from or to rest; on the first and last key segment, with
-  constant_speed on the whole path). A key's ease_in slows the motion arriving at it, ease_out
+  their own; every key is still reached at its time. tangents: the spline's tangents at keys
+  without tension, continuity or bias: monotone (Fritsch & Butland's, the default: no
+  overshoot where the path slows down, stops or turns back at a key) or catmull_rom (the
+  tangent parallel to the chord of the two neighbours, which swings past such keys). A path's
+  ease_in makes it start slowly, ease_out end slowly (1: from or to rest; on the first and
+  last key segment, with constant_speed on the whole path). A key's ease_in slows the motion arriving at it, ease_out
   the motion leaving it (speed times 1 - ease). constant_speed: the path is the same but is
   travelled at an even speed (by arc length; the keys' own eases then do not apply): the
   camera's eye and focal point together (eye_and_focal_point), the eye or the focal point; a
   prop's constant_speed_point, relative to the object's centre (default: the centre). The keys
   are then passed at other times, which --describe prints ("key arrival times"), with every
-  path's timing. The flags --tension, --continuity, --bias, --ease-in, --ease-out and
-  --constant-speed replace these for every path.
+  path's timing. The flags --tension, --continuity, --bias, --tangents, --ease-in,
+  --ease-out and --constant-speed replace these for every path.
 clipping range: without clipping_range (the default), each frame's near and far planes are
   reset from the bounds of the visible objects (vtkRenderer::ResetCameraClippingRange); with
   clipping_range on every camera key, the interpolated range is used as it is. Some keys with
@@ -524,6 +532,7 @@ struct Options
   bool HasTension = false, HasContinuity = false, HasBias = false;
   bool HasEaseIn = false, HasEaseOut = false;
   double Tension = 0.0, Continuity = 0.0, Bias = 0.0, EaseIn = 0.0, EaseOut = 0.0;
+  std::string Tangents; // empty: the paths' own
   bool ConstantSpeed = false;
   bool Compare = false;
   bool DemoScene = false;
@@ -700,6 +709,16 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
         o.EaseOut = number;
       }
     }
+    else if (a == "--tangents")
+    {
+      const auto& names = RenderKeys::TangentNames();
+      if (!value(v) || std::find(names.begin(), names.end(), v) == names.end())
+      {
+        return "--tangents expects monotone or catmull_rom" +
+          (v.empty() ? std::string("") : " (got " + RenderKeys::Printable(v) + ")");
+      }
+      o.Tangents = v;
+    }
     else if (a == "--constant-speed")
     {
       o.ConstantSpeed = true;
@@ -794,6 +813,7 @@ RenderKeys::PathTiming EffectiveTiming(RenderKeys::PathTiming t, const Options& 
   t.Tension = o.HasTension ? o.Tension : t.Tension;
   t.Continuity = o.HasContinuity ? o.Continuity : t.Continuity;
   t.Bias = o.HasBias ? o.Bias : t.Bias;
+  t.Tangents = o.Tangents.empty() ? t.Tangents : o.Tangents;
   t.EaseIn = o.HasEaseIn ? o.EaseIn : t.EaseIn;
   t.EaseOut = o.HasEaseOut ? o.EaseOut : t.EaseOut;
   t.ConstantSpeed = t.ConstantSpeed || o.ConstantSpeed;
@@ -814,6 +834,10 @@ std::string TimingFlags(const Options& o)
   add(o.HasTension, "tension", o.Tension);
   add(o.HasContinuity, "continuity", o.Continuity);
   add(o.HasBias, "bias", o.Bias);
+  if (!o.Tangents.empty())
+  {
+    out += (out.empty() ? "" : ", ") + std::string("tangents ") + o.Tangents;
+  }
   add(o.HasEaseIn, "ease in", o.EaseIn);
   add(o.HasEaseOut, "ease out", o.EaseOut);
   if (o.ConstantSpeed)
@@ -842,6 +866,7 @@ std::string ApplyTiming(Interpolator* path, const RenderKeys::PathTiming& t,
     return refused(
       "tension " + Num(t.Tension) + ", continuity " + Num(t.Continuity) + ", bias " + Num(t.Bias));
   }
+  path->SetMonotoneTangents(t.Tangents == "monotone");
   if (!path->SetEaseIn(t.EaseIn) || !path->SetEaseOut(t.EaseOut))
   {
     return refused("ease in " + Num(t.EaseIn) + ", ease out " + Num(t.EaseOut));
@@ -900,11 +925,17 @@ template <typename Interpolator>
 std::string PathTimingText(Interpolator* path, bool keyEases, ErrorCatcher& errors)
 {
   std::string out = "tension " + Num(path->GetTension()) + ", continuity " +
-    Num(path->GetContinuity()) + ", bias " + Num(path->GetBias());
-  if ((path->GetTension() != 0.0 || path->GetContinuity() != 0.0 || path->GetBias() != 0.0) &&
-    path->GetInterpolationType() != Interpolator::INTERPOLATION_TYPE_SPLINE)
+    Num(path->GetContinuity()) + ", bias " + Num(path->GetBias()) + ", tangents " +
+    RenderKeys::TangentNames()[path->GetMonotoneTangents() ? 0 : 1];
+  const bool tcb =
+    path->GetTension() != 0.0 || path->GetContinuity() != 0.0 || path->GetBias() != 0.0;
+  if (path->GetInterpolationType() != Interpolator::INTERPOLATION_TYPE_SPLINE)
   {
-    out += " (unused: they shape the spline type only)";
+    out += tcb || !path->GetMonotoneTangents() ? " (unused: they shape the spline type only)" : "";
+  }
+  else if (tcb)
+  {
+    out += " (unused: every key takes Kochanek-Bartels' tangents)";
   }
   out += ", ease in " + Num(path->GetEaseIn()) + ", ease out " + Num(path->GetEaseOut());
   if (!path->GetConstantSpeed())
