@@ -122,8 +122,10 @@ struct vtkCameraInterpolatorLCT::Internals
     Eigen::Vector3d rotationSum = Eigen::Vector3d::Zero(), twistSum = Eigen::Vector3d::Zero();
     for (int j = 0; j < w.count; ++j)
     {
+      // The orientations' steps are in world axes (lct::worldStep), the screw's in key r's frame:
+      // log(R_r^T R_j) = R_r^T log(R_j R_r^T).
       const lct::LogCoords* log = orientations.relative(w.key[j], r);
-      Eigen::Vector3d step = log ? Eigen::Vector3d(lct::rotationPart(*log))
+      Eigen::Vector3d step = log ? Eigen::Vector3d(rotation.transpose() * lct::rotationPart(*log))
                                  : Eigen::Vector3d::Zero(); // rotations always have one
       if (log && std::abs(w.key[j] - r) >= 2)
       {
@@ -131,7 +133,7 @@ struct vtkCameraInterpolatorLCT::Internals
         // keys sampled from one screw motion give that screw motion; but J(w)^-1 grows without
         // bound as |w| nears 2 pi (a turn of 2 pi has no twist unless it translates along its
         // axis): beyond kScrewWinding the principal step.
-        const Eigen::Vector3d continued =
+        const Eigen::Vector3d continued = rotation.transpose() *
           lct::rotationPart(orientations.continuedRelative(w.key[j], r, *log));
         if (continued.norm() < kScrewWinding)
         {

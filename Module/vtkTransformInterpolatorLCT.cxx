@@ -229,8 +229,8 @@ struct vtkTransformInterpolatorLCT::Internals
 
   /// The Spline tangents of the segment holding t: Kochanek-Bartels at keys with tension,
   /// continuity or bias (lct/PathTiming.h), else the monotone tangent (lct/MonotoneTangents.h)
-  /// from the steps to the key's neighbours in its own frame, or Catmull-Rom's when `monotone`
-  /// is off; the end keys keep their one-sided tangents (the secant).
+  /// from the steps from the key to its neighbours (lct::KeyLogs::relativeLog), or Catmull-Rom's
+  /// when `monotone` is off; the end keys keep their one-sided tangents (the secant).
   lct::SegmentTangents TangentsAt(
     const lct::KeyLogs& logs, const double* times, int n, double t, bool monotone) const
   {
@@ -275,9 +275,10 @@ struct vtkTransformInterpolatorLCT::Internals
   /// The Bezier key-and-control points of segments firstSegment..lastSegment of `keys` (in time
   /// order; `reachesFirst` / `reachesLast`: whether they include the first / last key of the
   /// interpolator), points 3 firstSegment .. 3 lastSegment + 3 of the sequence. Given control
-  /// transforms, else automatic ones that put the Catmull-Rom tangent m of the logs relative to
-  /// the key (in its frame) at each key: C+ = K exp(+h/3 m), C- = K exp(-h/3 m), with h the
-  /// segment's duration. `step(i, r)` gives log(K_r^-1 K_i) as a Result (0 for i == r).
+  /// transforms, else automatic ones that put the Catmull-Rom tangent m of the logs of the steps
+  /// from the key at each key: C+ = exp(+h/3 m) applied to K, C- = exp(-h/3 m) applied to K
+  /// (lct::KeyLogs::applyStep), with h the segment's duration. `step(i, r)` gives the log of the
+  /// step from K_r to K_i (lct::KeyLogs::relativeLog) as a Result (0 for i == r).
   template <typename Step>
   static bool BezierPoints(const std::vector<const Key*>& keys, int firstSegment, int lastSegment,
     bool reachesFirst, bool reachesLast, lct::Parametrisation p, Step&& step,
@@ -305,7 +306,8 @@ struct vtkTransformInterpolatorLCT::Internals
       const auto c = lct::exponential(ratio * (logs[0].value - logs[1].value), p);
       if (c)
       {
-        control = keys[k]->Matrix * c.value;
+        control = lct::KeyLogs::applyStep(
+          keys[k]->Matrix, c.value, p, lct::needsAccurateProducts(keys[k]->Matrix));
       }
       const lct::Status status =
         !c ? c.status : (control.allFinite() ? lct::Status::Ok : lct::Status::OutOfRange);

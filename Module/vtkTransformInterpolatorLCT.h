@@ -6,14 +6,16 @@
  * A drop-in replacement for vtkTransformInterpolator with the same method names. Where VTK's
  * class splits each key into translation, quaternion and a diagonal scale (so keys with shear or
  * scale along rotated axes are not reproduced), this one interpolates the log coordinates of the
- * whole matrix: every output is K_r exp(sum_i w_i log(K_r^-1 K_i)), one weighted sum and one exp,
- * with the weights w_i of the chosen curve scheme and K_r the key of largest weight (the relative
- * form of Hawkins & Grimm eq. 7, taken in the reference key's frame so that a translation the
- * keys share stays put: a bone keeps its length). Rotations between neighbouring keys take the
- * short way and the logarithms stay near the identity, where they are best conditioned. The
- * result depends on the reference key, so where the two largest weights cross, the results about
- * both are blended along the short geodesic between them (a smoothstep over a weight gap of 0.1):
- * the curve has no jump there and stays C1. See lct/KeyLogs.h.
+ * whole matrix: every output is the key of largest weight K_r = [L_r, t_r] moved by the weighted
+ * log steps to the others, [exp(sum_i w_i log(L_i L_r^-1)) L_r, sum_i w_i t_i] (MatrixLog:
+ * K_r exp(sum_i w_i log(K_r^-1 K_i))), one weighted sum and one exp, with the weights w_i of the
+ * chosen curve scheme (the relative form of Hawkins & Grimm eq. 7, its linear step in world axes
+ * as theirs, the translation as the weighted sum: a translation the keys share stays put, a bone
+ * keeps its length, and no in-between is stretched beyond the keys). Rotations between neighbouring
+ * keys take the short way and the logarithms stay near the identity, where they are best
+ * conditioned. The result depends on the reference key, so where the two largest weights cross, the
+ * results about both are blended along the short geodesic between them (a smoothstep over a weight
+ * gap of 0.1): the curve has no jump there and stays C1. See lct/KeyLogs.h.
  *
  * Interpolation types: Linear, Spline (interpolating C1 Catmull-Rom on the key times, VTK's
  * default), BSpline (approximating cubic, through the end keys), Subdivision (the 4-point
@@ -233,15 +235,15 @@ public:
   ///@{
   /**
    * Spline type only: the tangent at each inner key without its own tension, continuity or bias
-   * is Fritsch & Butland's monotone tangent of the log steps to its neighbours (in the key's
-   * frame; lct/MonotoneTangents.h): each step weighted by the other's speed, the speeds taken
-   * unit-free on the translation and on the linear (rotation and stretch) part. It is 0 where
-   * the motion turns back and never above twice the slower step, so the curve does not overshoot
-   * where the motion slows down or stops at a key: keys 0, 179.9 and 180 degrees one time unit
-   * apart stay below 180 degrees (plain Catmull-Rom swings 13 degrees past). On motion capture
-   * its mean error is below Linear's at every key spacing measured and its max at all but one
-   * (README, "Real motion capture"). Every key is still reproduced at its time and the curve
-   * stays C1. Default on; off gives plain Catmull-Rom.
+   * is Fritsch & Butland's monotone tangent of the log steps to its neighbours (the steps from
+   * the key, as the curve combines them; lct/MonotoneTangents.h): each step weighted by the other's
+   * speed, the speeds taken unit-free on the translation and on the linear (rotation and stretch)
+   * part. It is 0 where the motion turns back and never above twice the slower step, so the curve
+   * does not overshoot where the motion slows down or stops at a key: keys 0, 179.9 and 180 degrees
+   * one time unit apart stay below 180 degrees (plain Catmull-Rom swings 13 degrees past). On
+   * motion capture its mean error is below Linear's at every key spacing measured and its max at
+   * all but one (README, "Real motion capture"). Every key is still reproduced at its time and the
+   * curve stays C1. Default on; off gives plain Catmull-Rom.
    */
   vtkSetMacro(MonotoneTangents, vtkTypeBool);
   vtkGetMacro(MonotoneTangents, vtkTypeBool);

@@ -110,4 +110,32 @@ Eigen::Matrix4d relativeStep(const Eigen::Matrix4d& reference, const Eigen::Matr
     scaledByPowerOfTwo(Eigen::Vector3d(accurateInverseTimes(unit, difference)), -e));
 }
 
+namespace
+{
+/// [L^T, 0; 0 1]: products on the right of L are transposed products on its left.
+Eigen::Matrix4d transposedLinear(const Eigen::Matrix4d& m)
+{
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t.topLeftCorner<3, 3>() = m.topLeftCorner<3, 3>().transpose();
+  return t;
+}
+} // namespace
+
+Eigen::Matrix4d worldStep(const Eigen::Matrix4d& reference, const Eigen::Matrix4d& m)
+{
+  // L_m L_r^-1 = (L_r^-T L_m^T)^T, with relativeStep's exact minors for L_r^-T.
+  const Eigen::Matrix4d transposed = relativeStep(transposedLinear(reference), transposedLinear(m));
+  return makeAffine(transposed.topLeftCorner<3, 3>().transpose(),
+    m.topRightCorner<3, 1>() - reference.topRightCorner<3, 1>());
+}
+
+Eigen::Matrix4d applyWorldStep(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step, bool accurate)
+{
+  const Eigen::Matrix4d transposed =
+    productWith(transposedLinear(reference), transposedLinear(step), accurate);
+  return makeAffine(transposed.topLeftCorner<3, 3>().transpose(),
+    reference.topRightCorner<3, 1>() + step.topRightCorner<3, 1>());
+}
+
 } // namespace lct

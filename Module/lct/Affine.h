@@ -40,6 +40,19 @@ VTKLCT_EXPORT Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m);
 VTKLCT_EXPORT Eigen::Matrix4d relativeStep(
   const Eigen::Matrix4d& reference, const Eigen::Matrix4d& m);
 
+/// The step from key R to key M in world axes, [L_m L_r^-1, t_m - t_r]: the Polar relative
+/// form's (lct/KeyLogs.h), where M = [E L_r, t_r + d] for the step [E, d] (applyWorldStep). Its
+/// linear part acts after the reference's, in world axes, so a stretch of the step is never
+/// turned by the reference's own rotation (the step in R's frame, R^-1 M, is: blending a
+/// squashed key with a turned one through it inflates the in-between beyond both keys, by a
+/// factor that grows with the squash). Exact minors for an ill-conditioned R, as relativeStep.
+VTKLCT_EXPORT Eigen::Matrix4d worldStep(const Eigen::Matrix4d& reference, const Eigen::Matrix4d& m);
+
+/// [E L_r, t_r + d] for a step [E, d] in world axes (worldStep), with compensated dot products
+/// when `accurate` (needsAccurateProducts(R)).
+VTKLCT_EXPORT Eigen::Matrix4d applyWorldStep(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step, bool accurate);
+
 /// Whether the plain products with this map lose digits: ||A||_F^3 / det A > 1e3 (an upper bound
 /// of cond(A)^2 times 5.2, and at least cond(A)). relativeStep and the relative form use exact
 /// minors and compensated products then.

@@ -1,6 +1,7 @@
 #include "lct/Combination.h"
 
 #include "lct/Affine.h"
+#include "lct/KeyLogs.h"
 #include "lct/Parametrisation.h"
 
 namespace lct
@@ -31,7 +32,8 @@ std::size_t largestWeight(const double* weights, std::size_t count) noexcept
 
 namespace
 {
-/// exp(sum_i w_i log(R^-1 T_i)), or exp(sum_i w_i log T_i) without a reference R.
+/// exp(sum_i w_i log(step from R to T_i)) (Polar: worldStep, MatrixLog: R^-1 T_i), or
+/// exp(sum_i w_i log T_i) without a reference R.
 Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4d* keys,
   std::size_t count, const Eigen::Matrix4d* reference, Parametrisation p)
 {
@@ -42,12 +44,8 @@ Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4
     {
       continue; // log(R^-1 R) = 0 exactly
     }
-    const Eigen::Matrix4d step = reference ? relativeStep(*reference, keys[i]) : keys[i];
-    if (!step.allFinite())
-    {
-      return Result<Eigen::Matrix4d>::failure(Status::OutOfRange);
-    }
-    const auto logKey = logarithm(step, p);
+    const auto logKey =
+      reference ? KeyLogs::relativeLog(*reference, keys[i], p) : logarithm(keys[i], p);
     if (!logKey)
     {
       return Result<Eigen::Matrix4d>::failure(logKey.status);
@@ -82,7 +80,7 @@ Result<Eigen::Matrix4d> combineRelative(const double* weights, const Eigen::Matr
     return relative;
   }
   const bool accurate = needsAccurateProducts(keys[reference]);
-  relative.value = productWith(keys[reference], relative.value, accurate);
+  relative.value = KeyLogs::applyStep(keys[reference], relative.value, p, accurate);
   if (!relative.value.allFinite())
   {
     return Result<Eigen::Matrix4d>::failure(Status::OutOfRange);

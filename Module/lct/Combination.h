@@ -42,9 +42,11 @@ inline LogCoords lerp(const LogCoords& a, const LogCoords& b, double t)
 VTKLCT_EXPORT Result<Eigen::Matrix4d> combine(
   const double* weights, const Eigen::Matrix4d* keys, std::size_t count, Parametrisation p);
 
-/// R exp(sum_i w_i log(R^-1 T_i)) with R = keys[reference]: Hawkins & Grimm eq. 7 taken in the
-/// reference's own frame, so that the Polar translation part combines as sum_i w_i t_i (see
-/// lct/KeyLogs.h); the same as their world-frame form for the matrix log.
+/// The relative form about R = keys[reference] (Hawkins & Grimm eq. 7, lct/KeyLogs.h): Polar,
+/// the steps in world axes, exp(sum_i w_i log [L_i L_r^-1, t_i - t_r]) applied to R as
+/// [E L_r, t_r + d] (lct::worldStep), so the translation combines as sum_i w_i t_i and the
+/// linear part stays within the keys' stretches; MatrixLog, R exp(sum_i w_i log(R^-1 T_i)), the
+/// same on either side.
 VTKLCT_EXPORT Result<Eigen::Matrix4d> combineRelative(const double* weights,
   const Eigen::Matrix4d* keys, std::size_t count, std::size_t reference, Parametrisation p);
 

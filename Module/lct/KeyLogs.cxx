@@ -17,9 +17,17 @@ namespace lct
 Result<LogCoords> KeyLogs::relativeLog(
   const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p)
 {
-  const Eigen::Matrix4d step = relativeStep(reference, key);
+  const Eigen::Matrix4d step =
+    p == Parametrisation::Polar ? worldStep(reference, key) : relativeStep(reference, key);
   // A step that overflows is out of range, not "NaN or Inf in the input".
   return step.allFinite() ? logarithm(step, p) : Result<LogCoords>::failure(Status::OutOfRange);
+}
+
+Eigen::Matrix4d KeyLogs::applyStep(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step, Parametrisation p, bool accurate)
+{
+  return p == Parametrisation::Polar ? applyWorldStep(reference, step, accurate)
+                                     : productWith(reference, step, accurate);
 }
 
 namespace
@@ -447,7 +455,7 @@ Status KeyLogs::combineAbout(
     return m.status;
   }
   const Eigen::Matrix4d result =
-    productWith(this->Matrices[reference], m.value, this->Accurate[reference]);
+    applyStep(this->Matrices[reference], m.value, this->P, this->Accurate[reference]);
   if (!result.allFinite())
   {
     return Status::OutOfRange;
@@ -463,7 +471,7 @@ LogCoords KeyLogs::continuedRelative(int i, int r, const LogCoords& principal) c
     return principal; // principal matrix logs only
   }
   const int step = i > r ? 1 : -1;
-  Eigen::Vector3d previous = Eigen::Vector3d::Zero(); // key r's own: log(M_r^-1 M_r) = 0
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero(); // key r's own step is 0
   for (int k = r + step; k != i; k += step)
   {
     const LogCoords* between = this->relative(k, r);

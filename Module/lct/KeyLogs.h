@@ -4,21 +4,25 @@
  *        of a curve through them is one weighted sum and one exp (Alexa §5; Hawkins & Grimm
  *        eq. 7).
  *
- * For keys M_0 .. M_(n-1) it keeps log(M_r^-1 M_i) for |i - r| <= kReach (the relative form, in
- * the reference key's own frame) and the absolute logs log M_i, each on the rotation branch
- * nearest to its predecessor's (Kaji & Ochiai Algorithm 1). The relative logs are principal;
- * a curve point takes those of keys two or more from its reference (Polar) on the rotation
- * branch continued through the keys between, each nearest the one before it, so keys turning
- * by 100 degrees each do not wind back where two of them turn by 200. Given curve weights w
- * summing to 1 (lct/Curves.h):
+ * For keys M_0 .. M_(n-1) it keeps the log of the step from M_r to M_i for |i - r| <= kReach
+ * (the relative form; Polar: lct::worldStep, MatrixLog: M_r^-1 M_i) and the absolute logs log M_i,
+ * each on the rotation branch nearest to its predecessor's (Kaji & Ochiai Algorithm 1). The
+ * relative logs are principal; a curve point takes those of keys two or more from its reference
+ * (Polar) on the rotation branch continued through the keys between, each nearest the one before
+ * it, so keys turning by 100 degrees each do not wind back where two of them turn by 200. Given
+ * curve weights w summing to 1 (lct/Curves.h):
  *
- * - combineRelative: M_r exp(sum_i w_i log(M_r^-1 M_i)) with M_r the point of largest weight.
- *   Hawkins & Grimm put the reference on the other side (their matrices map world to camera);
- *   for maps to the world, the reference's own frame is the one in which the Polar translation
- *   part of M_r^-1 M_i is A_r^-1 (t_i - t_r), so the combined translation is exactly
- *   sum_i w_i t_i: a translation that keys share stays put (a bone keeps its length). For the
- *   matrix log both sides give the same result. The rotation part still depends on r, so where
- *   the two largest weights cross it would jump: within a weight gap of kHandOver the results
+ * - combineRelative: the steps from M_r, the point of largest weight, combined and applied to
+ *   it. MatrixLog: M_r exp(sum_i w_i log(M_r^-1 M_i)), which is also exp(sum_i w_i
+ *   log(M_i M_r^-1)) M_r (the log commutes with conjugation). Polar: the step of the linear
+ *   part in world axes, L_i L_r^-1 (Hawkins & Grimm's side), and the translation as the
+ *   difference t_i - t_r, so the result is [exp(sum_i w_i log(L_i L_r^-1)) L_r, sum_i w_i t_i]:
+ *   a translation that keys share stays put (a bone keeps its length), and the linear part stays
+ *   within the keys' stretches. The step in the reference's own frame, L_r^-1 L_i, does not: its
+ *   polar stretch is turned by the step's rotation before L_r squashes it, so a key squashed to
+ *   1/10 blended with one turned by 90 degrees grew to 2.2 times either key in between (47 times
+ *   for random keys of stretch up to e^5; session 27). The rotation part still depends on r, so
+ * where the two largest weights cross it would jump: within a weight gap of kHandOver the results
  *   about both are blended along the short geodesic between them, R_a (R_a^-1 R_b)^s, with a
  *   smoothstep s that is 1/2 at the crossing: no jump, and C1.
  * - combineAbsolute: exp(sum_i w_i log M_i): reference-free, keeps the winding of spins.
@@ -124,10 +128,17 @@ public:
   MissingLog missingLog(const CurveNeeds& needs, int firstSegment = 0,
     int lastSegment = std::numeric_limits<int>::max()) const;
 
-  /// log(M_r^-1 M_i) in p, computed as the logs held here are (a step that overflows is
-  /// OutOfRange), for callers that check or use a log outside a KeyLogs and must find the same.
+  /// The log in p of the step from M_r to M_i (Polar: lct::worldStep, MatrixLog: M_r^-1 M_i),
+  /// computed as the logs held here are (a step that overflows is OutOfRange), for callers that
+  /// check or use a log outside a KeyLogs and must find the same.
   static Result<LogCoords> relativeLog(
     const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p);
+
+  /// The point a combined step `step` (the exp of a sum of relativeLog's) reaches from
+  /// `reference`: Polar, lct::applyWorldStep; MatrixLog, reference * step. `accurate`:
+  /// lct::needsAccurateProducts(reference).
+  static Eigen::Matrix4d applyStep(const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step,
+    Parametrisation p, bool accurate);
 
   /// The same check for points that a caller holds outside a KeyLogs (an interpolator whose logs
   /// are rebuilt lazily, or the Bezier sequence of a few keys), computing each log it needs once:
@@ -144,7 +155,8 @@ public:
   const Eigen::Matrix4d& matrix(std::size_t i) const { return this->Matrices[i]; }
   Parametrisation parametrisation() const { return this->P; }
 
-  /// log(M_r^-1 M_i), or null when it does not exist or |i - r| > kReach.
+  /// The log of the step from M_r to M_i (relativeLog), or null when it does not exist or
+  /// |i - r| > kReach.
   const LogCoords* relative(int i, int r) const;
   /// `principal` = *relative(i, r) with its Polar rotation on the branch continued through the
   /// keys between r and i, each nearest the one before it (Kaji & Ochiai Algorithm 1), as curve

@@ -5,21 +5,21 @@
  *
  * Catmull-Rom's tangent at a key is the time-weighted mean of the neighbouring secants, so after
  * a long step and before a short one (keys at 0, 179.9 and 180 degrees, one time unit apart) the
- * curve swings 13 degrees past 180 (the issue measured ~11), and on motion capture its max error exceeds Linear's.
- * Fritsch & Butland ("A method for constructing local monotone piecewise cubic interpolants",
- * SIAM J. Sci. Stat. Comput. 5(2), 1984) take the harmonic mean 2 d- d+ / (d- + d+) of the
- * secants d-, d+ of scalar data (0 where they differ in sign), which lies in Fritsch & Carlson's
- * monotone region (0 <= m <= 3 min(d-, d+); SIAM J. Numer. Anal. 17(2), 1980). Written as
+ * curve swings 13 degrees past 180 (the issue measured ~11), and on motion capture its max error
+ * exceeds Linear's. Fritsch & Butland ("A method for constructing local monotone piecewise cubic
+ * interpolants", SIAM J. Sci. Stat. Comput. 5(2), 1984) take the harmonic mean 2 d- d+ / (d- + d+)
+ * of the secants d-, d+ of scalar data (0 where they differ in sign), which lies in Fritsch &
+ * Carlson's monotone region (0 <= m <= 3 min(d-, d+); SIAM J. Numer. Anal. 17(2), 1980). Written as
  * m = (|d+| d- + |d-| d+) / (|d-| + |d+|), each secant weighted by the other's speed, it applies
- * to the secant vectors of the log steps at a key (x[k +- 1] - x[k] = log(K_k^-1 K_(k +- 1)),
- * in the key's own frame): it is that harmonic mean where they are parallel, 0 where they are
- * opposite, |m| <= 2 min(|d-|, |d+|) always, and equal to their mean where the speeds agree.
- * The speeds combine the translation and the linear part (rotation and stretch, both unit-free
- * logs) of the logs, each made unit-free by its own scale |d-| + |d+|; a part whose steps are at
- * round-off level (1e-12 of the steps' largest entry) is left out, so that noise does
- * not steer the tangent. The tangent is a combination of the two secants
- * (lct::KeyTangent), so a curve point is still ONE weighted combination of the keys (then one
- * exp); every key is reproduced and the curve is C1 (a key's tangent is its own, the same on
+ * to the secant vectors of the log steps at a key (x[k +- 1] - x[k] = the log of the step from
+ * K_k to K_(k +- 1), lct::KeyLogs::relativeLog, as the curve combines them): it is that harmonic
+ * mean where they are parallel, 0 where they are opposite, |m| <= 2 min(|d-|, |d+|) always, and
+ * equal to their mean where the speeds agree. The speeds combine the translation and the linear
+ * part (rotation and stretch, both unit-free logs) of the logs, each made unit-free by its own
+ * scale |d-| + |d+|; a part whose steps are at round-off level (1e-12 of the steps' largest entry)
+ * is left out, so that noise does not steer the tangent. The tangent is a combination of the two
+ * secants (lct::KeyTangent), so a curve point is still ONE weighted combination of the keys (then
+ * one exp); every key is reproduced and the curve is C1 (a key's tangent is its own, the same on
  * both of its segments).
  */
 #ifndef lct_MonotoneTangents_h

@@ -251,47 +251,46 @@ TEST(Conditioning, ExtremeMagnitudesOfWellConditionedMaps)
 
 TEST(Conditioning, InterpolationBetweenIllConditionedKeys)
 {
-  // The 2-key case: K0 = diag(1e-6, 1, 1e6), K1 = Rz(10 deg) K0. The step K0^-1 K1 has
-  // condition ~3e10 and entries from 1e-7 to 1e5; halfway, K0 exp(log(K0^-1 K1) / 2) has the
-  // middle entry 294.7 (a 60-digit reference), where the cubic formula gave -179.9.
+  // The 2-key case: K0 = diag(1e-6, 1, 1e6), K1 = Rz(10 deg) K0: the same stretch,
+  // turned. The step in world axes, K1 K0^-1 = Rz(10 deg), is a plain turn, so halfway is
+  // Rz(5 deg) K0 (entry (1, 1) cos 5 deg). The step in K0's frame, K0^-1 K1, has condition ~3e10
+  // and its polar stretch turned by its rotation: that relative form gave 294.7 there (the
+  // cubic formula once -179.9), an in-between 295 times taller than either key.
   Eigen::Matrix4d keys[2];
   keys[0] = affine(Eigen::Vector3d(1e-6, 1, 1e6).asDiagonal());
   keys[1] = keys[0];
-  keys[1].topLeftCorner<3, 3>() =
-    Eigen::AngleAxisd(10.0 * lct_test::kPi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
-    keys[0].topLeftCorner<3, 3>();
+  const auto turn = [](double degrees) {
+    return Eigen::AngleAxisd(degrees * lct_test::kPi / 180.0, Eigen::Vector3d::UnitZ())
+      .toRotationMatrix();
+  };
+  keys[1].topLeftCorner<3, 3>() = turn(10.0) * keys[0].topLeftCorner<3, 3>();
+  const Eigen::Matrix3d expected = turn(5.0) * keys[0].topLeftCorner<3, 3>();
   const double w[2] = { 0.5, 0.5 };
-  const auto half = lct::combineRelative(w, keys, 2, 0, Parametrisation::Polar);
-  ASSERT_TRUE(half.ok()) << lct::describe(half.status);
-  EXPECT_NEAR(half.value(1, 1), 294.7, 0.05);
-  // The same from the other key: the two relative forms agree at equal weights up to the
-  // geodesic hand-over, so both are well away from the old -179.9.
-  const auto other = lct::combineRelative(w, keys, 2, 1, Parametrisation::Polar);
-  ASSERT_TRUE(other.ok());
-  EXPECT_GT(other.value(1, 1), 200.0);
-  // Against the oracle of the same formula in long double: the polar factors of the step from
-  // JacobiSVD in long double.
-  const Eigen::Matrix3d step = (lct::inverseAffine(keys[0]) * keys[1]).topLeftCorner<3, 3>();
-  const Eigen::JacobiSVD<LongMatrix3> svd(
-    step.cast<long double>(), Eigen::ComputeFullU | Eigen::ComputeFullV);
-  LongMatrix3 u = svd.matrixU(), v = svd.matrixV();
-  if (u.determinant() < 0)
+  for (const std::size_t reference : { 0, 1 })
   {
-    u.col(2) *= -1;
-    v.col(2) *= -1;
+    const auto half = lct::combineRelative(w, keys, 2, reference, Parametrisation::Polar);
+    ASSERT_TRUE(half.ok()) << lct::describe(half.status);
+    const Eigen::Matrix3d got = half.value.topLeftCorner<3, 3>();
+    // Entrywise relative to each column's size (the columns are 1e-6, 1 and 1e6 long).
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_LT((got.col(c) - expected.col(c)).norm() / expected.col(c).norm(), 1e-13)
+        << reference << " " << c;
+    }
+    EXPECT_NEAR(got(1, 1), std::cos(5.0 * lct_test::kPi / 180.0), 1e-14) << reference;
   }
-  const auto sigma = oracleSingularValues(step);
-  const LongMatrix3 rotation = u * v.transpose();
-  const Eigen::AngleAxis<long double> turn(rotation);
-  const LongMatrix3 halfRotation =
-    Eigen::AngleAxis<long double>(0.5L * turn.angle(), turn.axis()).toRotationMatrix();
-  const LongMatrix3 halfStretch = v * sigma.array().sqrt().matrix().asDiagonal() * v.transpose();
-  const LongMatrix3 expected =
-    keys[0].topLeftCorner<3, 3>().cast<long double>() * halfRotation * halfStretch;
-  const Eigen::Matrix3d got = half.value.topLeftCorner<3, 3>();
-  EXPECT_LT(
-    static_cast<double>((got.cast<long double>() - expected).norm() / expected.norm()), 1e-10);
-  EXPECT_NEAR(got(1, 1) / static_cast<double>(expected(1, 1)), 1.0, 1e-9);
+  // And between keys of different stretch along turned axes, nothing in between is larger than
+  // the keys: a key squashed to 1e-3 along x and one turned 90 degrees about z, unsquashed.
+  keys[0] = affine(Eigen::Vector3d(1e-3, 1, 1).asDiagonal());
+  keys[1] = affine(turn(90.0));
+  for (int s = 1; s < 20; ++s)
+  {
+    const double v[2] = { 1.0 - s / 20.0, s / 20.0 };
+    const auto m = lct::combineRelative(v, keys, 2, s < 10 ? 0 : 1, Parametrisation::Polar);
+    ASSERT_TRUE(m.ok());
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m.value.topLeftCorner<3, 3>());
+    EXPECT_LE(svd.singularValues()[0], 1.0 + 1e-12) << s;
+  }
 }
 
 TEST(Conditioning, SymmetricFunctionsOfSpreadSpectra)
