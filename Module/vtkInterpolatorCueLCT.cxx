@@ -12,6 +12,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransformInterpolatorLCT.h"
 
+#include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkInterpolatorCueLCT);
@@ -108,21 +109,61 @@ int vtkInterpolatorCueLCT::GetNumberOfProps()
 }
 
 //------------------------------------------------------------------------------
+bool vtkInterpolatorCueLCT::HasValidTimes(double cueTime) const
+{
+  return std::isfinite(cueTime) && std::isfinite(this->StartTime) && std::isfinite(this->EndTime) &&
+    (this->KeyTimeMapping == KEY_TIME_MAPPING_CUE_TIME || this->EndTime >= this->StartTime);
+}
+
+//------------------------------------------------------------------------------
+void vtkInterpolatorCueLCT::Initialize()
+{
+  if (!this->HasValidTimes(this->StartTime))
+  {
+    vtkErrorMacro(<< "Initialize: a cue from " << this->StartTime << " to " << this->EndTime
+                  << " cannot run (NaN or infinite times, or an end before the start): no tick "
+                     "will move the camera or the props.");
+  }
+  this->Superclass::Initialize();
+}
+
+//------------------------------------------------------------------------------
 double vtkInterpolatorCueLCT::KeyTime(double cueTime, double minimumT, double maximumT)
 {
+  if (!this->HasValidTimes(cueTime))
+  {
+    return minimumT;
+  }
   if (this->KeyTimeMapping == KEY_TIME_MAPPING_CUE_TIME)
   {
     return cueTime - this->StartTime;
   }
-  const double duration = this->EndTime - this->StartTime;
-  const double u = duration > 0.0 ? (cueTime - this->StartTime) / duration : 0.0;
-  return minimumT + u * (maximumT - minimumT);
+  double duration = this->EndTime - this->StartTime;
+  double elapsed = cueTime - this->StartTime;
+  if (!std::isfinite(duration) || !std::isfinite(elapsed))
+  {
+    // Halves of finite doubles never overflow when subtracted (a cue from -1e308 to 1e308).
+    duration = 0.5 * this->EndTime - 0.5 * this->StartTime;
+    elapsed = 0.5 * cueTime - 0.5 * this->StartTime;
+  }
+  const double u = duration > 0.0 ? elapsed / duration : 0.0;
+  // Exactly minimumT and maximumT at the cue's ends, and no overflow of maximumT - minimumT.
+  return (1.0 - u) * minimumT + u * maximumT;
 }
 
 //------------------------------------------------------------------------------
 void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, double clocktime)
 {
   Internals& in = *this->Internal;
+  if (!this->HasValidTimes(currenttime))
+  {
+    vtkErrorMacro(<< "TickInternal: cue time " << currenttime << " of a cue from "
+                  << this->StartTime << " to " << this->EndTime
+                  << " maps to no key time (NaN or infinite times, or an end before the start); "
+                     "nothing moved.");
+    this->Superclass::TickInternal(currenttime, deltatime, clocktime);
+    return;
+  }
   if (in.Camera && in.CameraPath)
   {
     const double t =

@@ -87,9 +87,20 @@ public:
   ///@}
 
   /**
-   * The key time of interpolator range [minimumT, maximumT] at cue time `cueTime`.
+   * The key time of interpolator range [minimumT, maximumT] at cue time `cueTime`, at any
+   * magnitude (a cue from -1e308 to 1e308 maps its middle to the middle of the range). Where the
+   * cue has no valid times (cueTime, StartTime or EndTime NaN or infinite, or EndTime before
+   * StartTime with range mapping) there is none: it returns minimumT, and Tick reports the cue's
+   * times with an error and moves nothing.
    */
   double KeyTime(double cueTime, double minimumT, double maximumT);
+
+  /**
+   * vtkAnimationCue's, reporting a cue that cannot run: StartTime or EndTime NaN or infinite
+   * (vtkAnimationCue never starts such a cue, silently) or, with range mapping, EndTime before
+   * StartTime.
+   */
+  void Initialize() override;
 
 protected:
   vtkInterpolatorCueLCT();
@@ -98,6 +109,10 @@ protected:
   void TickInternal(double currenttime, double deltatime, double clocktime) override;
 
   int KeyTimeMapping = KEY_TIME_MAPPING_RANGE;
+
+  /// Whether cue time `cueTime` has a key time (finite times; with range mapping, a cue that
+  /// does not end before it starts).
+  bool HasValidTimes(double cueTime) const;
 
 private:
   vtkInterpolatorCueLCT(const vtkInterpolatorCueLCT&) = delete;

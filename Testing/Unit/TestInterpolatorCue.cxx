@@ -131,6 +131,55 @@ TEST(InterpolatorCueLCT, NullArgumentsAndFailingPathsAreReported)
   EXPECT_EQ(errors->Count, 4); // two AddProp, the path's own error, the cue's
 }
 
+TEST(InterpolatorCueLCT, CueTimesAtAnyMagnitudeAndInvalidOnesReported)
+{
+  // A cue from -1e308 to 1e308: its duration overflows, yet its middle is the middle of the keys
+  // (it mapped every tick to key time 0, and its end to NaN).
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCamera> key;
+  key->SetFocalPoint(0, 0, 0);
+  key->SetPosition(0, 0, 10);
+  ASSERT_EQ(path->AddCamera(0.0, key), 1);
+  key->SetPosition(10, 0, 10);
+  ASSERT_EQ(path->AddCamera(1.0, key), 1);
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  vtkNew<lct_test::ErrorCounter> errors;
+  cue->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> camera;
+  cue->SetCamera(camera);
+  cue->SetCameraInterpolator(path);
+  cue->SetStartTime(-1e308);
+  cue->SetEndTime(1e308);
+  EXPECT_EQ(cue->KeyTime(-1e308, 0.0, 1.0), 0.0);
+  EXPECT_DOUBLE_EQ(cue->KeyTime(0.0, 0.0, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(cue->KeyTime(5e307, 0.0, 1.0), 0.75);
+  EXPECT_EQ(cue->KeyTime(1e308, 0.0, 1.0), 1.0);
+  // A key range of the same magnitude.
+  EXPECT_DOUBLE_EQ(cue->KeyTime(5e307, -1e308, 1e308), 5e307);
+  cue->Initialize();
+  cue->Tick(0.0, 0.0, 0.0);
+  EXPECT_NEAR(camera->GetPosition()[0], 5.0, 0.5);
+  cue->Tick(1e308, 0.0, 1e308);
+  EXPECT_NEAR(camera->GetPosition()[0], 10.0, 1e-9);
+  EXPECT_EQ(errors->Count, 0);
+  // A NaN start: no key time. vtkAnimationCue never starts such a cue; Initialize says so, and
+  // a tick called on the cue's own TickInternal (a subclass, a cue already running) moves nothing.
+  cue->SetStartTime(std::nan(""));
+  EXPECT_EQ(cue->KeyTime(0.0, 2.0, 3.0), 2.0);
+  cue->Initialize();
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_NE(errors->Last.find("cannot run"), std::string::npos) << errors->Last;
+  camera->SetPosition(1, 2, 3);
+  cue->Tick(0.0, 0.0, 0.0);
+  EXPECT_EQ(camera->GetPosition()[0], 1.0);
+  // An end before the start, with range mapping.
+  cue->SetStartTime(2.0);
+  cue->SetEndTime(1.0);
+  cue->Initialize();
+  EXPECT_EQ(errors->Count, 2);
+  EXPECT_NE(errors->Last.find("an end before the start"), std::string::npos) << errors->Last;
+}
+
 TEST(InterpolatorCueLCT, RealTimeSceneDrivesTheCamera)
 {
   vtkNew<vtkCameraInterpolatorLCT> cameraPath;
