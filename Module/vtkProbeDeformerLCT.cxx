@@ -41,6 +41,9 @@ vtkStandardNewMacro(vtkProbeDeformerLCT);
 namespace
 {
 constexpr int kMaxProbes = 65536;
+/// Probes that all shrink by more than 1/kMinimumShrink are refused (RequestData): the blend
+/// would keep fewer than 8 digits of the result's own size.
+constexpr double kMinimumShrink = 1e-8;
 constexpr double kDefaultRadius = 8.0;
 
 struct Probe
@@ -433,6 +436,21 @@ int vtkProbeDeformerLCT::RequestData(
       references[i] =
         p.HasReference ? p.Reference : (useHistory ? in.History[i] : Eigen::Vector3d::Zero());
     }
+  }
+  // Points move as p + (A - I)(p - c) + t, accurate near the identity with round-off on the
+  // scale of the input: where every probe shrinks by 1e8 or more, so does every point's blend,
+  // and the result keeps fewer than 8 digits of its own size (one probe scaling by 1e-15 put
+  // points 4 % off, by 1e-20 at 0). ||L||_F bounds the largest stretch from above.
+  if (std::all_of(relative.begin(), relative.end(),
+        [](const Eigen::Matrix4d& a) { return a.topLeftCorner<3, 3>().norm() < kMinimumShrink; }))
+  {
+    vtkErrorMacro(<< "every probe shrinks by more than " << lct::formatNumber(1.0 / kMinimumShrink)
+                  << " (probe 0: largest stretch at most "
+                  << lct::formatNumber(relative[0].topLeftCorner<3, 3>().norm())
+                  << "): the deformed points would keep fewer than 8 digits of their own size "
+                     "(they move as p + (A - I) p, with round-off on the input's scale); "
+                     "deform with probes nearer the identity, then scale the result.");
+    return fail();
   }
   const lct::BlendMode mode = this->BlendMode == MATRIX_LOG ? lct::BlendMode::MatrixLog
     : this->BlendMode == LINEAR                             ? lct::BlendMode::Linear

@@ -55,7 +55,11 @@
  * Bad input (no probes, a probe matrix that is not finite, affine or of positive determinant,
  * a MATRIX_LOG probe without a real logarithm, a non-positive radius or exponent, a missing or
  * mismatched weight or index array, NaN/Inf weights, an index out of range, weights whose sum
- * the normalisation cannot divide by, a result that overflows) is reported with a vtkErrorMacro
+ * the normalisation cannot divide by, a result that overflows, probes that all shrink by 1e8 or
+ * more, whose blend would keep fewer than 8 digits of the result's own size: points move as
+ * p + (A - I)(p - c) + t, accurate near the identity, with round-off on the scale of the input,
+ * so a region that one probe shrinks among others keeps the input's absolute accuracy, not its
+ * own relative one) is reported with a vtkErrorMacro
  * naming the probe or point; RequestData then returns 0 and the output keeps the last valid
  * result (empty before the first).
  *

@@ -1536,6 +1536,49 @@ TEST(ProbeDeformer, BadInputIsRefusedAndTheLastOutputKept)
   }
 }
 
+TEST(ProbeDeformer, AShrinkBeyondEightDigitsIsRefusedNotRoundedAway)
+{
+  // One probe scaling by s: every point must come out as s p. Points move as p + (A - I) p, with
+  // round-off on the input's scale: s = 1e-3 keeps 13 digits; s = 1e-15 put points 4 % off and
+  // s = 1e-20 at 0, with Update returning 1. Now a shrink by more than 1e8 is refused.
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  points->InsertNextPoint(0, 0, 1.1);
+  points->InsertNextPoint(3, 4, 5);
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  for (const int mode : { vtkProbeDeformerLCT::LINEAR, vtkProbeDeformerLCT::POLAR,
+         vtkProbeDeformerLCT::DUAL_QUATERNION })
+  {
+    for (const double scale : { 1e-3, 1e-7, 1e-9, 1e-15, 1e-20, 1e-300 })
+    {
+      vtkNew<vtkProbeDeformerLCT> f;
+      f->SetBlendMode(mode);
+      vtkNew<vtkMatrix4x4> m;
+      for (int k = 0; k < 3; ++k)
+      {
+        m->SetElement(k, k, scale);
+      }
+      ASSERT_GE(f->AddProbe(m), 0);
+      f->SetInputData(mesh);
+      if (scale >= 1e-8)
+      {
+        ASSERT_EQ(f->GetExecutive()->Update(), 1) << mode << " " << scale;
+        const Eigen::Vector3d got =
+          pointOf(vtkPointSet::SafeDownCast(f->GetOutputDataObject(0)), 3);
+        EXPECT_LT((got - scale * Eigen::Vector3d(3, 4, 5)).norm() / (scale * std::sqrt(50.0)), 1e-7)
+          << mode << " " << scale;
+      }
+      else
+      {
+        expectRefused(f, "every probe shrinks", 0);
+      }
+    }
+  }
+}
+
 TEST(ProbeDeformer, ATwistedCylinderKeepsItsRadiusExceptUnderLinearBlending)
 {
   // A cylinder of radius 1 along z in [0, 10]; the top probe turned 180 degrees about z. At
