@@ -74,6 +74,43 @@ std::string describeMissing(const lct::MissingLog& missing, double key, double r
      << " (the default FocalFrame method, SetMethodToFocalFrame(), interpolates any turn)";
   return os.str();
 }
+
+/// Whether the CameraMatrix method gives `key` back at its own time: its matrix P_b S V
+/// decomposes (lct::fromCameraMatrix) into the key's position, window centre and view angle.
+/// A window centre beyond ~1e16 leaves the matrix without their digits (1e20: NaN), so a key
+/// the method accepted was refused at its own time. Else `why` says so.
+bool cameraMatrixGivesKeyBack(const Key& key, std::string& why)
+{
+  const char* cause = "";
+  const auto parameters = lct::fromCameraKey(key.Camera, &cause);
+  const auto back = parameters
+    ? lct::fromCameraMatrix(key.CameraMatrix, parameters.value)
+    : lct::Result<lct::CameraParameters>::failure(lct::Status::NonFinite);
+  if (back)
+  {
+    const lct::CameraParameters& p = parameters.value;
+    const lct::CameraParameters& b = back.value;
+    const double reach = p.position.cwiseAbs().maxCoeff() + (p.position - p.focalPoint).norm();
+    if ((b.position - p.position).norm() <= 1e-8 * reach &&
+      (b.windowCenter - p.windowCenter).norm() <= 1e-8 * (1.0 + p.windowCenter.norm()) &&
+      (p.parallelProjection || std::abs(b.viewAngle - p.viewAngle) <= 1e-8 * p.viewAngle))
+    {
+      return true;
+    }
+  }
+  std::ostringstream os;
+  os << "with the CameraMatrix method the key at t = " << lct::formatNumber(key.Time)
+     << " is not given back by its own camera matrix, Hawkins & Grimm's P_b S V, which keeps too "
+        "few digits of it";
+  if (parameters)
+  {
+    os << " (window centre (" << lct::formatNumber(parameters.value.windowCenter.x()) << ", "
+       << lct::formatNumber(parameters.value.windowCenter.y()) << "))";
+  }
+  os << "; the default FocalFrame method, SetMethodToFocalFrame(), interpolates it";
+  why = os.str();
+  return false;
+}
 } // namespace
 
 /// The keys and the logs of their orientations. Only the orientation of the focal frame goes
@@ -422,6 +459,13 @@ struct vtkCameraInterpolatorLCT::Internals
   {
     this->OrientationLogs(); // flattens the keys
     std::lock_guard<std::mutex> lock(this->Mutex);
+    for (std::size_t k = 0; k < this->Keys.size(); ++k)
+    {
+      if (!cameraMatrixGivesKeyBack(this->Keys[k], why))
+      {
+        return false;
+      }
+    }
     lct::MissingLog missing;
     if (this->CameraMatricesCurrent && this->CameraMatricesStatus == lct::Status::Ok)
     {
@@ -573,7 +617,8 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
   const Key added{ t, key.value, lct::cameraMatrix(parameters.value), {} };
   std::string missing;
   if (this->Method == METHOD_CAMERA_MATRIX &&
-    !this->Internal->CheckCameraMatrices(t, &added, this->InterpolationType, missing))
+    (!cameraMatrixGivesKeyBack(added, missing) ||
+      !this->Internal->CheckCameraMatrices(t, &added, this->InterpolationType, missing)))
   {
     vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << missing
                   << "; key rejected.");

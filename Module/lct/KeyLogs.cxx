@@ -501,6 +501,22 @@ Status KeyLogs::checkResult(const CurveWeights& w, const Eigen::Matrix4d& out) c
 Status KeyLogs::combineRelative(
   const CurveWeights& w, Eigen::Matrix4d& result, MissingLog* missing) const
 {
+  // A key at its own time (every other weight 0) is that key, exactly: no exp, no product and
+  // nothing to check (the determinant check refused, at its own time, the camera matrix of a
+  // scene at 1e-100 whose determinant double cannot form).
+  int only = -1;
+  for (int j = 0; j < w.count; ++j)
+  {
+    if (w.weight[j] != 0.0)
+    {
+      only = only == -1 && w.weight[j] == 1.0 ? j : -2;
+    }
+  }
+  if (only >= 0)
+  {
+    result = this->Matrices[w.key[only]];
+    return Status::Ok;
+  }
   Eigen::Matrix4d out;
   const Status status = this->combineRelativeUnchecked(w, out, missing);
   if (status != Status::Ok)

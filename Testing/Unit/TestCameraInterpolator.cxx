@@ -485,6 +485,62 @@ TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndRefusesMissi
   EXPECT_EQ(errors->Count, 2) << errors->Last;
 }
 
+TEST(CameraInterpolatorLCT, CameraMatrixMethodGivesEveryAcceptedKeyBackAtItsTime)
+{
+  // A window centre of 1e20 leaves Hawkins & Grimm's P_b S V without the key's digits: the key
+  // was accepted and then refused at its own time ("NaN or Inf"). Now refused when added, and
+  // SetMethod(CameraMatrix) refuses keys added under FocalFrame, the method kept.
+  vtkNew<ErrorCounter> errors;
+  vtkNew<vtkCamera> key, out;
+  key->SetPosition(0, 0, 10);
+  key->SetFocalPoint(0, 0, 0);
+  for (const double centre : { 1e10, 1e15, 1e20, 1e100 })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    path->AddObserver(vtkCommand::ErrorEvent, errors);
+    ASSERT_EQ(path->SetMethodToCameraMatrix(), 1);
+    key->SetWindowCenter(centre, 0.0);
+    const int before = errors->Count;
+    if (path->AddCamera(0.0, key))
+    {
+      ASSERT_EQ(path->InterpolateCamera(0.0, out), 1) << centre;
+      EXPECT_NEAR(out->GetWindowCenter()[0] / centre, 1.0, 1e-9) << centre;
+    }
+    else
+    {
+      EXPECT_GE(centre, 1e20);
+      EXPECT_EQ(errors->Count, before + 1);
+      EXPECT_NE(errors->Last.find("not given back by its own camera matrix"), std::string::npos)
+        << errors->Last;
+      ASSERT_EQ(path->SetMethodToFocalFrame(), 1);
+      ASSERT_EQ(path->AddCamera(0.0, key), 1);
+      EXPECT_EQ(path->SetMethodToCameraMatrix(), 0);
+      EXPECT_EQ(path->GetMethod(), vtkCameraInterpolatorLCT::METHOD_FOCAL_FRAME);
+      ASSERT_EQ(path->InterpolateCamera(0.0, out), 1);
+      EXPECT_EQ(out->GetWindowCenter()[0], centre);
+    }
+  }
+  // A key whose camera matrix double cannot check the determinant of (a scene at 1e-100, window
+  // centre -1e300, view angle 179, clipping range from 1e-300) was refused as inaccurate at its
+  // own time: a key at its time is itself.
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(path->SetMethodToCameraMatrix(), 1);
+  key->SetPosition(5.6565715657623136e-101, 1.3670329043305083e-100, 1.799344378782324e-101);
+  key->SetFocalPoint(5.6565715657623136e-101, 1.3670329043305083e-100, -1e-20);
+  key->SetViewUp(-0.4136631609789255, -0.7861606699329886, 0.45916684364121724);
+  key->SetViewAngle(179.0);
+  key->SetWindowCenter(-1e300, -0.4496204639521768);
+  key->SetViewShear(0.0, 0.0, 0.0);
+  key->SetClippingRange(1e-300, 1e-20);
+  const int before = errors->Count;
+  ASSERT_EQ(path->AddCamera(-3.5, key), 1) << errors->Last;
+  ASSERT_EQ(path->InterpolateCamera(-3.5, out), 1) << errors->Last;
+  EXPECT_NEAR(out->GetWindowCenter()[0] / -1e300, 1.0, 1e-9);
+  EXPECT_NEAR(out->GetViewAngle(), 179.0, 1e-9);
+  EXPECT_EQ(errors->Count, before);
+}
+
 namespace
 {
 /// Azimuth samples of `path` on [t0, t1], each unwrapped to within 180 degrees of the one before.
