@@ -296,7 +296,7 @@ int vtkShapeBlenderLCT::RequestData(
     ++this->NumberOfFactorizations;
     if (!issue.ok())
     {
-      if (issue.status == lct::Status::NonFinite)
+      if (issue.status == lct::Status::NonFinite && issue.point >= 0)
       {
         vtkErrorMacro(<< "rest mesh: point " << issue.point << " is "
                       << formatPoint(points[issue.point]) << ": NaN or Inf");
@@ -306,10 +306,17 @@ int vtkShapeBlenderLCT::RequestData(
         vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face)
                       << " is degenerate (zero or near-zero area): its affine map is undefined");
       }
-      else if (issue.status == lct::Status::OutOfRange)
+      else if (issue.status == lct::Status::OutOfRange && issue.face >= 0 &&
+        !lct::isTriangleScaleInRange(points[triangles[issue.face][0]],
+          points[triangles[issue.face][1]], points[triangles[issue.face][2]]))
       {
         vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face) << " is "
                       << scaleRangeProblem(triangles[issue.face], points));
+      }
+      else if (issue.status == lct::Status::OutOfRange && issue.face >= 0)
+      {
+        vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face)
+                      << " is too thin for its size: " << lct::describe(issue.status));
       }
       else if (issue.status == lct::Status::InvalidArgument && issue.face >= 0)
       {
@@ -386,18 +393,23 @@ int vtkShapeBlenderLCT::RequestData(
     ++this->NumberOfLogComputations;
     if (!issue.ok())
     {
-      if (issue.status == lct::Status::NonFinite)
+      // NonFinite and Singular also come from polarLog, with no point and a triangle that
+      // passed the checks: those take the last branch, not the point's or the triangle's words.
+      if (issue.status == lct::Status::NonFinite && issue.point >= 0)
       {
         vtkErrorMacro(<< "target " << issue.target << ": point " << issue.point << " is "
                       << formatPoint(targets[issue.target][issue.point]) << ": NaN or Inf");
       }
-      else if (issue.status == lct::Status::Singular)
+      else if (issue.status == lct::Status::Singular && issue.face >= 0 &&
+        lct::isDegenerateTriangle(targets[issue.target][in.Triangles[issue.face][0]],
+          targets[issue.target][in.Triangles[issue.face][1]],
+          targets[issue.target][in.Triangles[issue.face][2]]))
       {
         vtkErrorMacro(<< "target " << issue.target << ": "
                       << describeTriangle(in.Triangles, issue.face)
                       << " is degenerate (zero or near-zero area): its affine map is singular");
       }
-      else if (issue.status == lct::Status::OutOfRange &&
+      else if (issue.status == lct::Status::OutOfRange && issue.face >= 0 &&
         !lct::isTriangleScaleInRange(targets[issue.target][in.Triangles[issue.face][0]],
           targets[issue.target][in.Triangles[issue.face][1]],
           targets[issue.target][in.Triangles[issue.face][2]]))

@@ -1,5 +1,6 @@
 #include "lct/ShapeBlend.h"
 
+#include "lct/Conditioning.h"
 #include "lct/PolarParametrisation.h"
 #include "lct/SO3.h"
 
@@ -9,6 +10,7 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -76,18 +78,68 @@ Index findRoot(std::vector<Index>& parent, Index v)
   return v;
 }
 
-/// Per piece, the centroid of `points` (pieceOf maps points to pieces).
+/// The exact sum of doubles as non-overlapping partials of increasing magnitude (Shewchuk's
+/// grow-expansion, as Python's math.fsum), rounded once at the end.
+class ExactSum
+{
+public:
+  void add(double x)
+  {
+    std::size_t kept = 0;
+    for (double y : this->Partials)
+    {
+      if (std::abs(x) < std::abs(y))
+      {
+        std::swap(x, y);
+      }
+      const double hi = x + y;
+      const double lo = y - (hi - x); // exact: x + y = hi + lo
+      if (lo != 0.0)
+      {
+        this->Partials[kept++] = lo;
+      }
+      x = hi;
+    }
+    this->Partials.resize(kept);
+    this->Partials.push_back(x);
+  }
+  double value() const
+  {
+    double sum = 0.0;
+    for (auto p = this->Partials.rbegin(); p != this->Partials.rend(); ++p)
+    {
+      sum += *p;
+    }
+    return sum;
+  }
+
+private:
+  std::vector<double> Partials;
+};
+
+/// Per piece, the centroid of `points` (pieceOf maps points to pieces). Summed exactly: the
+/// centroid becomes a translation of the blend, whose pieces can be far smaller than the meshes
+/// (halfway between a mesh and its copy scaled by S, sqrt S). A plain sum is off by ~eps S for
+/// points of size S even when their centroid is 0, which moved that blend by eps sqrt S times its
+/// size (433 sizes at S = 1e40; at S = 1e80 every point rounded to the same one).
 std::vector<Eigen::Vector3d> pieceCentroids(const std::vector<Eigen::Vector3d>& points,
   const std::vector<Index>& pieceOf, const std::vector<Index>& pieceSize)
 {
-  std::vector<Eigen::Vector3d> c(pieceSize.size(), Eigen::Vector3d::Zero());
+  std::vector<std::array<ExactSum, 3>> sums(pieceSize.size());
   for (std::size_t v = 0; v < points.size(); ++v)
   {
-    c[pieceOf[v]] += points[v];
+    for (int i = 0; i < 3; ++i)
+    {
+      sums[pieceOf[v]][i].add(points[v][i]);
+    }
   }
+  std::vector<Eigen::Vector3d> c(pieceSize.size());
   for (std::size_t p = 0; p < c.size(); ++p)
   {
-    c[p] /= static_cast<double>(pieceSize[p]);
+    for (int i = 0; i < 3; ++i)
+    {
+      c[p][i] = sums[p][i].value() / static_cast<double>(pieceSize[p]);
+    }
   }
   return c;
 }
@@ -245,13 +297,26 @@ ShapeBlendIssue ShapeBlender::setRest(const std::vector<Eigen::Vector3d>& points
         failure.record({ Status::Singular, -1, j });
         return;
       }
-      d.RestInverse[j] = edgeMatrix(a, b, c).inverse();
+      // E_0 is inverted at unit size (2^-e E_0 is exact): its determinant |n|^(3/2) grows as the
+      // cube of the triangle and leaves double's range beyond ~2^+-340, well inside
+      // kTriangleScaleExponent, where a plain inverse holds Inf/NaN (small) or 0 (large).
+      const Eigen::Matrix3d e0 = edgeMatrix(a, b, c);
+      const int e = unitScaleExponent(e0);
+      d.RestInverse[j] =
+        scaledByPowerOfTwo(Eigen::Matrix3d(scaledByPowerOfTwo(e0, -e).inverse()), -e);
       // J = [x1 x2 x3 g] G with G = difference E_0^-1; the ghost row g3 of G is solved out.
       const Eigen::Matrix<double, 4, 3> g = difference * d.RestInverse[j];
       const Eigen::RowVector3d g3 = g.row(3);
       const Eigen::Matrix3d projector =
         Eigen::Matrix3d::Identity() - g3.transpose() * g3 / g3.squaredNorm();
       d.H[j] = g.topRows<3>() * projector;
+      // H H^T scales as 1 / (size^2 sine): a tiny, thin triangle can still overflow it, and NaN
+      // would pass the factorisation unnoticed.
+      if (!(d.H[j] * d.H[j].transpose()).allFinite())
+      {
+        failure.record({ Status::OutOfRange, -1, j });
+        return;
+      }
     }
   });
   if (!failure.get().ok())
@@ -491,7 +556,7 @@ ShapeBlendIssue ShapeBlender::blend(const std::vector<double>& weights,
   }
   const Index m = static_cast<Index>(d.Triangles.size());
   const std::size_t k = weights.size();
-  // Per face: B_j = phi(sum_i w_i psi(A_ij)), and its right-hand side H_j B_j^T.
+  // Per face: B_j = phi(sum_i w_i psi(A_ij)), then its right-hand side H_j B_j^T.
   std::vector<Eigen::Matrix3d> local(m);
   FirstFailure failure;
   runParallel(parallel, m, [&](Index begin, Index end) {
@@ -508,13 +573,28 @@ ShapeBlendIssue ShapeBlender::blend(const std::vector<double>& weights,
         failure.record({ map.status, -1, j });
         return;
       }
-      local[j] = d.H[j] * map.value.topLeftCorner<3, 3>().transpose();
+      local[j] = map.value.topLeftCorner<3, 3>();
     }
   });
   if (!failure.get().ok())
   {
     return failure.get();
   }
+  // The right-hand side at the unit size of the largest B_j, the solution scaled back (exact
+  // powers of two): H ~ 1 / (rest size) and B ~ (blend size) / (rest size), so for meshes more
+  // than ~2^540 apart in size (both inside kTriangleScaleExponent) the plain products H B^T
+  // overflow, or underflow to a silently wrong blend, though the blend itself is in range.
+  int scale = std::numeric_limits<int>::min();
+  for (const Eigen::Matrix3d& b : local)
+  {
+    scale = std::max(scale, unitScaleExponent(b));
+  }
+  runParallel(parallel, m, [&](Index begin, Index end) {
+    for (Index j = begin; j < end; ++j)
+    {
+      local[j] = d.H[j] * scaledByPowerOfTwo(local[j], -scale).transpose();
+    }
+  });
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(d.Unknowns, 3);
   for (Index j = 0; j < m; ++j)
   {
@@ -527,10 +607,15 @@ ShapeBlendIssue ShapeBlender::blend(const std::vector<double>& weights,
       }
     }
   }
-  const Eigen::MatrixXd x = d.Solver.solve(rhs);
-  if (d.Solver.info() != Eigen::Success || !x.allFinite())
+  const Eigen::MatrixXd unitX = d.Solver.solve(rhs);
+  if (d.Solver.info() != Eigen::Success)
   {
     return { Status::NumericalFailure };
+  }
+  const Eigen::MatrixXd x = scaledByPowerOfTwo(unitX, scale);
+  if (!x.allFinite())
+  {
+    return { Status::OutOfRange }; // the right-hand side or the solve overflowed
   }
   // Pinned points at 0; then each piece moves so its centroid is the blend of the centroids.
   std::vector<Eigen::Vector3d> result(d.Points, Eigen::Vector3d::Zero());

@@ -64,7 +64,8 @@ constexpr double kDegenerateTriangleRatio = 1e-12;
 
 /// A triangle's edge coordinates (differences of its points) must be at most 2^this in
 /// magnitude, and its largest one at least 2^-this (~1e+-144): squared edges, areas (2^+-960)
-/// and the ghost vertex stay normal doubles.
+/// and the ghost vertex stay normal doubles. (Its edge matrix, whose determinant is a volume, is
+/// inverted at unit size.)
 constexpr int kTriangleScaleExponent = 480;
 
 using Triangle = std::array<std::int64_t, 3>;
@@ -99,8 +100,9 @@ public:
   /// Validates the rest mesh, builds the per-face maps and factorises the normal equations.
   /// Fails with InvalidArgument (no triangles, or a point index outside [0, points) — `face`
   /// says which), NonFinite (`point` says which), Singular (a degenerate triangle, `face`),
-  /// OutOfRange (a triangle beyond kTriangleScaleExponent, `face`) or NumericalFailure (the
-  /// factorisation failed: please report the mesh).
+  /// OutOfRange (a triangle beyond kTriangleScaleExponent, or one so small and thin that its
+  /// normal-equation block overflows, `face`) or NumericalFailure (the factorisation failed:
+  /// please report the mesh).
   ShapeBlendIssue setRest(const std::vector<Eigen::Vector3d>& points,
     const std::vector<Triangle>& triangles, const ParallelFor& parallel = {});
 
@@ -108,14 +110,16 @@ public:
   /// with branch-consistent rotations. Fails with InvalidArgument (no rest mesh, or another point
   /// count: `target`), NonFinite (`target`, `point`), Singular (a degenerate target triangle:
   /// `target`, `face`) or IllConditioned / OutOfRange (a face map polarLog cannot take: `target`,
-  /// `face`). On failure the previous targets are kept.
+  /// `face`; polarLog's own NonFinite and Singular come with `face` and `point` -1). On failure
+  /// the previous targets are kept.
   ShapeBlendIssue setTargets(
     const std::vector<std::vector<Eigen::Vector3d>>& targets, const ParallelFor& parallel = {});
 
   /// The blended points for weights w (one per target, any finite reals). Fails with
   /// InvalidArgument (no rest mesh, or weights.size() != number of targets), NonFinite (a weight:
   /// `target`), or the status of polarExp at the first face whose blended map it cannot form
-  /// (OutOfRange, IllConditioned: `face`; e.g. an extrapolation so far that a stretch overflows).
+  /// (OutOfRange, IllConditioned: `face`; e.g. an extrapolation so far that a stretch overflows),
+  /// or OutOfRange without a face when the solve or the points overflow.
   /// `out` is left unchanged on failure.
   ShapeBlendIssue blend(const std::vector<double>& weights, std::vector<Eigen::Vector3d>& out,
     const ParallelFor& parallel = {}) const;

@@ -8,6 +8,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFloatArray.h"
@@ -726,6 +727,65 @@ TEST(ShapeBlendBadInput, MeshesBeyondTheScaleRange)
     const std::vector<Eigen::Vector3d> out = lct_test::pointsOf(f.blender->GetOutput());
     const std::vector<Eigen::Vector3d> expected = lct_test::pointsOf(f.target);
     EXPECT_LE(maxDistance(out, expected), 1e-9 * 1e100);
+  }
+}
+
+TEST(ShapeBlender, AnyScaleInTheDocumentedRangeBlendsAccurately)
+{
+  // The bar at scale s with its copy scaled by S, weight 1/2: s sqrt S times the bar, centred
+  // where the bar is (its centroid, 0 for both meshes). A plain sum of the target's points put
+  // its centroid ~1e-17 S off 0, which moved the blend by 433 of its sizes at S = 1e40 and
+  // collapsed it to one point at S = 1e80; the rest's edge matrix, inverted in plain double,
+  // held Inf or 0 beyond ~1e+-102 (its determinant is a volume), which refused meshes at
+  // 1e-130 or 1e130 with garbage ("point -1 is (3.99e252, ...)") and "degenerate" triangles.
+  // A saddle on a grid of binary fractions, symmetric about 0: its centroid is exactly 0, and
+  // so is that of any copy scaled by a factor (each coordinate times the same double).
+  Mesh rest;
+  const double grid[4] = { -0.5, -0.25, 0.25, 0.5 };
+  for (const double y : grid)
+  {
+    for (const double x : grid)
+    {
+      rest.points.emplace_back(x, y, x * y);
+    }
+  }
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const std::int64_t v = 4 * j + i;
+      rest.triangles.push_back({ v, v + 1, v + 5 });
+      rest.triangles.push_back({ v, v + 5, v + 4 });
+    }
+  }
+  const auto scaled = [](const std::vector<Eigen::Vector3d>& points, double factor) {
+    std::vector<Eigen::Vector3d> out;
+    for (const auto& p : points)
+    {
+      out.push_back(factor * p);
+    }
+    return out;
+  };
+  const std::pair<double, double> cases[] = { { 1.0, 1e10 }, { 1.0, 1e40 }, { 1.0, 1e80 },
+    { 1.0, 1e100 }, { 1e-130, 1.0 }, { 1e130, 1.0 }, { 1e-140, 1.0 }, { 1e140, 1.0 },
+    { 1e-100, 1e-40 }, { 1e100, 1e40 } };
+  for (const auto& [s, factor] : cases)
+  {
+    Mesh at = rest;
+    at.points = scaled(rest.points, s);
+    vtkNew<vtkShapeBlenderLCT> blender;
+    vtkNew<lct_test::ErrorCounter> errors;
+    blender->AddObserver(vtkCommand::ErrorEvent, errors);
+    blender->SetInputData(lct_test::toPolyData(at.points, at.triangles));
+    const int index =
+      blender->AddTarget(lct_test::toPolyData(scaled(at.points, factor), at.triangles));
+    ASSERT_EQ(blender->SetWeight(index, 0.5), 1);
+    ASSERT_EQ(blender->GetExecutive()->Update(), 1) << s << " " << factor << " " << errors->Last;
+    EXPECT_EQ(errors->Count, 0) << errors->Last;
+    const std::vector<Eigen::Vector3d> expected = scaled(at.points, std::sqrt(factor));
+    const double size = s * std::sqrt(factor);
+    EXPECT_LT(maxDistance(lct_test::pointsOf(blender->GetOutput()), expected) / size, 1e-12)
+      << s << " " << factor;
   }
 }
 
