@@ -129,8 +129,11 @@ CameraTangents monotoneCameraTangents(const CameraKey& previous, const CameraKey
     tangents.part[CameraFocalPoint] = single((focalPrevious - focal).stableNorm() / distance,
       (focalNext - focal).stableNorm() / distance, kRoundOffPart * coordinates / distance);
   }
-  const CameraKey::Channels stepBefore = previous.channels - key.channels;
-  const CameraKey::Channels stepAfter = next.channels - key.channels;
+  // Quarter steps: the weights depend on the ratio of the two sides only, and quarters of finite
+  // channels never overflow when subtracted, nor their groups' norms (window centres of 1e308
+  // either way gave infinite steps, and Catmull-Rom's tangent in place of the monotone one).
+  const CameraKey::Channels stepBefore = 0.25 * previous.channels - 0.25 * key.channels;
+  const CameraKey::Channels stepAfter = 0.25 * next.channels - 0.25 * key.channels;
   for (int part = CameraDistance; part < CameraPartCount; ++part)
   {
     // The group's steps (at most 3 channels); stableNorm, so that window centres near the double

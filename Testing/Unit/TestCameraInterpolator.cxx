@@ -485,6 +485,40 @@ TEST(CameraInterpolatorLCT, PaperCameraMatrixMethodReproducesKeysAndRefusesMissi
   EXPECT_EQ(errors->Count, 2) << errors->Last;
 }
 
+TEST(CameraInterpolatorLCT, MonotoneWindowCentresAtTheEndOfTheDoubleRange)
+{
+  // Window-centre keys (S, 0), (-S, 0), (S, S), (0, 0): the curve over S is the same for every
+  // S. At S = 1e308 and beyond the steps between keys overflowed and the tangents silently
+  // became Catmull-Rom's.
+  const auto path = [](double s, std::vector<double>& out) {
+    vtkNew<vtkCameraInterpolatorLCT> interpolator;
+    const double centres[4][2] = { { s, 0.0 }, { -s, 0.0 }, { s, s }, { 0.0, 0.0 } };
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      key->SetPosition(0, 0, 10);
+      key->SetWindowCenter(centres[k][0], centres[k][1]);
+      ASSERT_EQ(interpolator->AddCamera(k, key), 1);
+    }
+    vtkNew<vtkCamera> camera;
+    for (int i = 0; i <= 30; ++i)
+    {
+      ASSERT_EQ(interpolator->InterpolateCamera(i / 10.0, camera), 1);
+      out.push_back(camera->GetWindowCenter()[0] / s);
+      out.push_back(camera->GetWindowCenter()[1] / s);
+    }
+  };
+  std::vector<double> unit, huge;
+  path(1.7, unit);
+  path(1.7e308, huge);
+  ASSERT_EQ(unit.size(), huge.size());
+  for (std::size_t i = 0; i < unit.size(); ++i)
+  {
+    EXPECT_NEAR(unit[i], huge[i], 1e-12) << i;
+  }
+  EXPECT_NEAR(unit[10], -0.23607, 1e-5); // t = 0.5: monotone, not Catmull-Rom's -0.25
+}
+
 TEST(CameraInterpolatorLCT, CameraMatrixMethodGivesEveryAcceptedKeyBackAtItsTime)
 {
   // A window centre of 1e20 leaves Hawkins & Grimm's P_b S V without the key's digits: the key
