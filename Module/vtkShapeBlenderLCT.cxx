@@ -20,6 +20,8 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -125,6 +127,16 @@ std::string describeTriangle(const std::vector<lct::Triangle>& triangles, std::i
   const lct::Triangle& t = triangles[face];
   return "triangle " + std::to_string(face) + " (points " + std::to_string(t[0]) + ", " +
     std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
+}
+
+/// |n| / (longest edge)^2 of a triangle: 0 for a degenerate one, about its smallest angle for a
+/// sliver (lct::isDegenerateTriangle's measure).
+double thinness(const lct::Triangle& t, const std::vector<Eigen::Vector3d>& points)
+{
+  const Eigen::Vector3d &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+  const double longest =
+    std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
+  return (b - a).cross(c - a).stableNorm() / longest;
 }
 
 /// Why a triangle beyond lct::kTriangleScaleExponent is refused, with its size.
@@ -322,6 +334,24 @@ int vtkShapeBlenderLCT::RequestData(
       {
         vtkErrorMacro(<< "rest mesh: " << describeTriangle(triangles, issue.face)
                       << " refers to a point outside [0, " << points.size() << ")");
+      }
+      else if (issue.status == lct::Status::NumericalFailure)
+      {
+        // Not an eigensolver (lct::describe's words for NumericalFailure): the sparse LDL^T of
+        // the normal equations, whose entries grow as 1 / (area): slivers above the degenerate
+        // threshold (sine 1e-9 of the smallest angle) already make it indefinite in double.
+        std::size_t thinnest = 0;
+        for (std::size_t j = 1; j < triangles.size(); ++j)
+        {
+          thinnest =
+            thinness(triangles[j], points) < thinness(triangles[thinnest], points) ? j : thinnest;
+        }
+        vtkErrorMacro(<< "rest mesh: the normal equations cannot be factorised in double "
+                         "precision: its thinnest triangle, "
+                      << describeTriangle(triangles, static_cast<std::int64_t>(thinnest))
+                      << ", has |n| / (longest edge)^2 = "
+                      << lct::formatNumber(thinness(triangles[thinnest], points))
+                      << " (degenerate at 1e-12): remesh or remove such slivers");
       }
       else
       {

@@ -690,6 +690,24 @@ TEST(ShapeBlendBadInput, DegenerateTriangles)
     f.target->GetPoints()->Modified();
     f.expectFailure("target 0: triangle 0 (points 0, 1, 25) is degenerate");
   }
+  {
+    // Rest: two triangles, one a sliver above the degenerate threshold (|n| / longest^2 = 1e-10):
+    // the normal equations are indefinite in double. It was reported as an eigensolver defect
+    // ("please report the matrix"); the message names the thinnest triangle and what to do.
+    const std::vector<Eigen::Vector3d> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1e-10, 0 },
+      { 0.5, 1, 0 } };
+    const std::vector<lct::Triangle> triangles = { { 0, 1, 2 }, { 1, 3, 2 } };
+    vtkNew<vtkShapeBlenderLCT> blender;
+    vtkNew<lct_test::ErrorCounter> errors;
+    blender->AddObserver(vtkCommand::ErrorEvent, errors);
+    blender->SetInputData(lct_test::toPolyData(points, triangles));
+    EXPECT_EQ(blender->GetExecutive()->Update(), 0);
+    EXPECT_NE(errors->Last.find("cannot be factorised in double precision: its thinnest triangle, "
+                                "triangle 0 (points 0, 1, 2), has |n| / (longest edge)^2 = 1e-10"),
+      std::string::npos)
+      << errors->Last;
+    EXPECT_EQ(errors->Last.find("eigensolver"), std::string::npos) << errors->Last;
+  }
 }
 
 // Meshes at 1e+-200: their squared edges and areas leave double's range, and they were refused
