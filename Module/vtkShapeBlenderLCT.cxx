@@ -20,8 +20,6 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -129,14 +127,10 @@ std::string describeTriangle(const std::vector<lct::Triangle>& triangles, std::i
     std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
 }
 
-/// |n| / (longest edge)^2 of a triangle: 0 for a degenerate one, about its smallest angle for a
-/// sliver (lct::isDegenerateTriangle's measure).
+/// lct::triangleThinness of triangle t.
 double thinness(const lct::Triangle& t, const std::vector<Eigen::Vector3d>& points)
 {
-  const Eigen::Vector3d &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
-  const double longest =
-    std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
-  return (b - a).cross(c - a).stableNorm() / longest;
+  return lct::triangleThinness(points[t[0]], points[t[1]], points[t[2]]);
 }
 
 /// Why a triangle beyond lct::kTriangleScaleExponent is refused, with its size.

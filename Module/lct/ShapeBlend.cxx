@@ -152,14 +152,37 @@ Eigen::Vector3d ghostVertex(
   return (a + b + c) / 3.0 + n / std::sqrt(n.stableNorm());
 }
 
+namespace
+{
+/// A triangle's squared longest edge and |n|, twice its area.
+struct TriangleMeasure
+{
+  double longest;
+  double n;
+};
+
+TriangleMeasure measureTriangle(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  return { std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() }),
+    (b - a).cross(c - a).stableNorm() }; // |n| up to 2^961 (kTriangleScaleExponent)
+}
+} // namespace
+
 bool isDegenerateTriangle(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
-  const double longest =
-    std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
-  const double n = (b - a).cross(c - a).stableNorm(); // |n| up to 2^961 (kTriangleScaleExponent)
+  const TriangleMeasure m = measureTriangle(a, b, c);
   // Written so that NaN (and a zero longest edge) counts as degenerate.
-  return !(n > kDegenerateTriangleRatio * longest) || !std::isfinite(n) || !std::isfinite(longest);
+  return !(m.n > kDegenerateTriangleRatio * m.longest) || !std::isfinite(m.n) ||
+    !std::isfinite(m.longest);
+}
+
+double triangleThinness(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const TriangleMeasure m = measureTriangle(a, b, c);
+  return m.n / m.longest;
 }
 
 double triangleSize(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)

@@ -150,6 +150,11 @@ VTKLCT_EXPORT Eigen::Vector3d ghostVertex(
 VTKLCT_EXPORT bool isDegenerateTriangle(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+/// |n| / (longest edge)^2, the measure isDegenerateTriangle compares with
+/// kDegenerateTriangleRatio: about the smallest angle of a sliver (NaN for a point).
+VTKLCT_EXPORT double triangleThinness(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
 /// A triangle's size: the largest magnitude of its edge coordinates (differences of its points).
 VTKLCT_EXPORT double triangleSize(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
