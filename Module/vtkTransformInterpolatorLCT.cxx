@@ -229,7 +229,7 @@ struct vtkTransformInterpolatorLCT::Internals
 
   /// The Spline tangents of the segment holding t: Kochanek-Bartels at keys with tension,
   /// continuity or bias (lct/PathTiming.h), else the monotone tangent (lct/MonotoneTangents.h)
-  /// from the steps from the key to its neighbours (lct::KeyLogs::relativeLog), or Catmull-Rom's
+  /// from the steps from the key to its neighbours (lct::relativeLog), or Catmull-Rom's
   /// when `monotone` is off; the end keys keep their one-sided tangents (the secant).
   lct::SegmentTangents TangentsAt(
     const lct::KeyLogs& logs, const double* times, int n, double t, bool monotone) const
@@ -277,8 +277,8 @@ struct vtkTransformInterpolatorLCT::Internals
   /// interpolator), points 3 firstSegment .. 3 lastSegment + 3 of the sequence. Given control
   /// transforms, else automatic ones that put the Catmull-Rom tangent m of the logs of the steps
   /// from the key at each key: C+ = exp(+h/3 m) applied to K, C- = exp(-h/3 m) applied to K
-  /// (lct::KeyLogs::applyStep), with h the segment's duration. `step(i, r)` gives the log of the
-  /// step from K_r to K_i (lct::KeyLogs::relativeLog) as a Result (0 for i == r).
+  /// (lct::applyRelativeStep), with h the segment's duration. `step(i, r)` gives the log of the
+  /// step from K_r to K_i (lct::relativeLog) as a Result (0 for i == r).
   template <typename Step>
   static bool BezierPoints(const std::vector<const Key*>& keys, int firstSegment, int lastSegment,
     bool reachesFirst, bool reachesLast, lct::Parametrisation p, Step&& step,
@@ -306,7 +306,7 @@ struct vtkTransformInterpolatorLCT::Internals
       const auto c = lct::exponential(ratio * (logs[0].value - logs[1].value), p);
       if (c)
       {
-        control = lct::KeyLogs::applyStep(
+        control = lct::applyRelativeStep(
           keys[k]->Matrix, c.value, p, lct::needsAccurateProducts(keys[k]->Matrix));
       }
       const lct::Status status =
@@ -445,7 +445,7 @@ struct vtkTransformInterpolatorLCT::Internals
     }
     auto step = [&](int i, int r) {
       return i == r ? lct::Result<lct::LogCoords>{ lct::LogCoords::Zero(), lct::Status::Ok }
-                    : lct::KeyLogs::relativeLog(w.keys[r]->Matrix, w.keys[i]->Matrix, this->P);
+                    : lct::relativeLog(w.keys[r]->Matrix, w.keys[i]->Matrix, this->P);
     };
     std::vector<Eigen::Matrix4d> points;
     if (!BezierPoints(w.keys, firstSegment, lastSegment, w.reachesFirst, w.reachesLast, this->P,

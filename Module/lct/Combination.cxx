@@ -1,7 +1,6 @@
 #include "lct/Combination.h"
 
 #include "lct/Affine.h"
-#include "lct/KeyLogs.h"
 #include "lct/Parametrisation.h"
 
 namespace lct
@@ -30,6 +29,35 @@ std::size_t largestWeight(const double* weights, std::size_t count) noexcept
   return best;
 }
 
+Result<LogCoords> relativeLog(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p)
+{
+  const Eigen::Matrix4d step =
+    p == Parametrisation::Polar ? worldStep(reference, key) : relativeStep(reference, key);
+  // A step that overflows is out of range, not "NaN or Inf in the input".
+  if (!step.allFinite())
+  {
+    return Result<LogCoords>::failure(Status::OutOfRange);
+  }
+  const auto log = logarithm(step, p);
+  // Between two maps of positive determinant the step has one too: a step whose determinant
+  // rounded to 0 or below is too ill-conditioned for double, not a reflection (the message
+  // read "negative determinant" for keys of determinant 1 and 2e-15).
+  if ((log.status == Status::NegativeDeterminant || log.status == Status::Singular) &&
+    validateAffine(reference) == Status::Ok && validateAffine(key) == Status::Ok)
+  {
+    return Result<LogCoords>::failure(Status::IllConditioned);
+  }
+  return log;
+}
+
+Eigen::Matrix4d applyRelativeStep(
+  const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step, Parametrisation p, bool accurate)
+{
+  return p == Parametrisation::Polar ? applyWorldStep(reference, step, accurate)
+                                     : productWith(reference, step, accurate);
+}
+
 namespace
 {
 /// exp(sum_i w_i log(step from R to T_i)) (Polar: worldStep, MatrixLog: R^-1 T_i), or
@@ -44,8 +72,7 @@ Result<Eigen::Matrix4d> combineTimes(const double* weights, const Eigen::Matrix4
     {
       continue; // log(R^-1 R) = 0 exactly
     }
-    const auto logKey =
-      reference ? KeyLogs::relativeLog(*reference, keys[i], p) : logarithm(keys[i], p);
+    const auto logKey = reference ? relativeLog(*reference, keys[i], p) : logarithm(keys[i], p);
     if (!logKey)
     {
       return Result<Eigen::Matrix4d>::failure(logKey.status);
@@ -80,7 +107,7 @@ Result<Eigen::Matrix4d> combineRelative(const double* weights, const Eigen::Matr
     return relative;
   }
   const bool accurate = needsAccurateProducts(keys[reference]);
-  relative.value = KeyLogs::applyStep(keys[reference], relative.value, p, accurate);
+  relative.value = applyRelativeStep(keys[reference], relative.value, p, accurate);
   if (!relative.value.allFinite())
   {
     return Result<Eigen::Matrix4d>::failure(Status::OutOfRange);

@@ -126,7 +126,7 @@ VTKLCT_EXPORT CurveStencil curveStencil(CurveScheme scheme, int keyCount, int se
 /// Calls visit(i, r) for every pair of distinct keys (Bezier: sequence points) that a curve point
 /// on segments firstSegment..lastSegment (clamped to the segments) combines: i in a segment's
 /// stencil, r one of its references, so that its relative log (the step from M_r to M_i,
-/// lct::KeyLogs::relativeLog) is needed. A pair may come more than once (neighbouring segments
+/// lct::relativeLog) is needed. A pair may come more than once (neighbouring segments
 /// share keys). Stops, returning false, at the first visit that returns false.
 template <typename Visit>
 bool forEachCombinedPair(

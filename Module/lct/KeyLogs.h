@@ -44,6 +44,7 @@
 
 #include "vtkLCTModule.h"
 
+#include "lct/Combination.h"
 #include "lct/Curves.h"
 #include "lct/Keyframes.h"
 #include "lct/LogCoords.h"
@@ -128,18 +129,6 @@ public:
   MissingLog missingLog(const CurveNeeds& needs, int firstSegment = 0,
     int lastSegment = std::numeric_limits<int>::max()) const;
 
-  /// The log in p of the step from M_r to M_i (Polar: lct::worldStep, MatrixLog: M_r^-1 M_i),
-  /// computed as the logs held here are (a step that overflows is OutOfRange), for callers that
-  /// check or use a log outside a KeyLogs and must find the same.
-  static Result<LogCoords> relativeLog(
-    const Eigen::Matrix4d& reference, const Eigen::Matrix4d& key, Parametrisation p);
-
-  /// The point a combined step `step` (the exp of a sum of relativeLog's) reaches from
-  /// `reference`: Polar, lct::applyWorldStep; MatrixLog, reference * step. `accurate`:
-  /// lct::needsAccurateProducts(reference).
-  static Eigen::Matrix4d applyStep(const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step,
-    Parametrisation p, bool accurate);
-
   /// The same check for points that a caller holds outside a KeyLogs (an interpolator whose logs
   /// are rebuilt lazily, or the Bezier sequence of a few keys), computing each log it needs once:
   /// `points[j - offset]` is key j of keyCount keys (Bezier: point j of their key-and-control
@@ -155,7 +144,7 @@ public:
   const Eigen::Matrix4d& matrix(std::size_t i) const { return this->Matrices[i]; }
   Parametrisation parametrisation() const { return this->P; }
 
-  /// The log of the step from M_r to M_i (relativeLog), or null when it does not exist or
+  /// The log of the step from M_r to M_i (lct::relativeLog), or null when it does not exist or
   /// |i - r| > kReach.
   const LogCoords* relative(int i, int r) const;
   /// `principal` = *relative(i, r) with its Polar rotation on the branch continued through the
@@ -302,7 +291,7 @@ MissingLog missingAfterEdit(const KeyWindow<Key>& w, bool removal, MatrixOf&& ma
        !missing.missing() && i <= (removal ? w.edited : std::min(w.edited + 1, m - 1));
        ++i)
   {
-    const Status status = KeyLogs::relativeLog(points[i - 1], points[i], p).status;
+    const Status status = relativeLog(points[i - 1], points[i], p).status;
     if (status != Status::Ok)
     {
       missing = MissingLog{ status, offset + i, offset + i - 1 };

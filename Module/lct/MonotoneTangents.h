@@ -12,7 +12,7 @@
  * Carlson's monotone region (0 <= m <= 3 min(d-, d+); SIAM J. Numer. Anal. 17(2), 1980). Written as
  * m = (|d+| d- + |d-| d+) / (|d-| + |d+|), each secant weighted by the other's speed, it applies
  * to the secant vectors of the log steps at a key (x[k +- 1] - x[k] = the log of the step from
- * K_k to K_(k +- 1), lct::KeyLogs::relativeLog, as the curve combines them): it is that harmonic
+ * K_k to K_(k +- 1), lct::relativeLog, as the curve combines them): it is that harmonic
  * mean where they are parallel, 0 where they are opposite, |m| <= 2 min(|d-|, |d+|) always, and
  * equal to their mean where the speeds agree. The speeds combine the translation and the linear
  * part (rotation and stretch, both unit-free logs) of the logs, each made unit-free by its own

@@ -1,6 +1,7 @@
 // Issue #12 §3: the default Spline (Catmull-Rom with monotone-limited tangents) does not overshoot
 // on monotone data, reproduces its keys and stays C1; plain Catmull-Rom (MonotoneTangentsOff)
 // does overshoot on the same data, so these tests can fail.
+#include "lct/Affine.h"
 #include "lct/Curves.h"
 #include "lct/MonotoneTangents.h"
 
@@ -296,6 +297,34 @@ TEST(MonotoneTangents, RoundOffInAStillPartDoesNotSteerTheCurve)
     { vtkTransformInterpolatorLCT::POLAR, vtkTransformInterpolatorLCT::MATRIX_LOG })
   {
     EXPECT_NEAR(angleAt(p, 0.0, 1.5, even, -100.0), -105.0, 1e-9) << p;
+  }
+  // Turning the scene turns the curve (Polar, keys that stretch along different axes): the
+  // stretch's size counted each off-diagonal once, and turning every key by 45 degrees about z
+  // moved the curve by 0.7 %.
+  {
+    const double e = std::exp(1.0);
+    vtkNew<vtkTransform> turn;
+    turn->RotateZ(45.0);
+    vtkNew<vtkTransformInterpolatorLCT> still, turned;
+    const Eigen::Vector3d stretches[3] = { { 1.0 / e, 1.0, 1.0 }, { 1.0, 1.0, 1.0 },
+      { 1.0, 1.0, e } };
+    vtkNew<vtkMatrix4x4> m, gm;
+    for (int k = 0; k < 3; ++k)
+    {
+      lct_test::toVtk(lct::makeAffine(stretches[k].asDiagonal(), Eigen::Vector3d::Zero()), m);
+      vtkMatrix4x4::Multiply4x4(turn->GetMatrix(), m, gm);
+      ASSERT_EQ(still->AddTransform(k, m), 1);
+      ASSERT_EQ(turned->AddTransform(k, gm), 1);
+    }
+    double worst = 0.0;
+    for (int s = 0; s <= 100; ++s)
+    {
+      ASSERT_EQ(still->InterpolateTransform(2.0 * s / 100, m), 1);
+      ASSERT_EQ(turned->InterpolateTransform(2.0 * s / 100, gm), 1);
+      const Eigen::Matrix4d expected = lct_test::fromVtk(turn->GetMatrix()) * lct_test::fromVtk(m);
+      worst = std::max(worst, (expected - lct_test::fromVtk(gm)).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(worst, 1e-13);
   }
   // Left-multiplying every key by G multiplies the curve by G (MatrixLog, random rigid keys).
   std::mt19937 random(5);

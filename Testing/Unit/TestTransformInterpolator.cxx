@@ -212,6 +212,74 @@ TEST(TransformInterpolatorLCT, InBetweensStayWithinTheKeysStretches)
   }
 }
 
+TEST(TransformInterpolatorLCT, NoJumpWhereTheReferenceKeyChangesBetweenStretchedKeys)
+{
+  // Keys R_k diag(100, 1, 0.01) (condition 1e4): the results about the two keys of a segment
+  // are blended where their weights cross. The blend took the matrix power of the step between
+  // them in the result's own frame, far from normal here; it failed and the curve snapped to
+  // one side: steps of 45 times the others around t = 1.5. Now the step is a relative log
+  // like every other, and no sample step exceeds 1.2 times the median.
+  lct_test::RandomTransforms random(11);
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<vtkMatrix4x4> m;
+  for (int k = 0; k < 4; ++k)
+  {
+    const Eigen::Matrix3d linear =
+      random.Rotation() * Eigen::Vector3d(100.0, 1.0, 0.01).asDiagonal().toDenseMatrix();
+    toVtk(lct::makeAffine(linear, Eigen::Vector3d::Zero()), m);
+    ASSERT_EQ(path->AddTransform(k, m), 1);
+  }
+  for (const double middle : { 0.5, 1.5, 2.5 })
+  {
+    std::vector<double> steps;
+    Eigen::Matrix4d previous = Eigen::Matrix4d::Zero();
+    for (int i = 0; i <= 400; ++i)
+    {
+      ASSERT_EQ(path->InterpolateTransform(middle - 0.2 + 0.4 * i / 400, m), 1);
+      const Eigen::Matrix4d current = fromVtk(m);
+      if (i > 0)
+      {
+        steps.push_back((current - previous).norm() / current.norm());
+      }
+      previous = current;
+    }
+    std::vector<double> sorted = steps;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    EXPECT_LE(sorted.back(), 1.2 * median) << middle;
+  }
+}
+
+TEST(TransformInterpolatorLCT, AStepTooIllConditionedIsNotCalledAReflection)
+{
+  // Two keys of positive determinant (1 and 2e-15) whose step is beyond double's reach: its
+  // computed determinant rounded below 0, and the key was refused as "negative (a reflection)".
+  const double first[9] = { 235.18507057736505, -34542.573377627676, -64861.954964248485,
+    95.31575106815572, -14000.65998962326, -26288.67779145755, -70.1542915326977,
+    10301.192711569443, 19344.88579024852 };
+  const double second[9] = { 0.0778424907124333, -0.03210076401567792, -0.0010934846826013574,
+    -0.3315266039332908, 0.13971813090656796, 0.001780309450494782, -0.856716073813885,
+    0.35983323261090316, 0.005769418686698595 };
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  path->SetInterpolationTypeToLinear();
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkMatrix4x4> m;
+  for (int i = 0; i < 9; ++i)
+  {
+    m->SetElement(i / 3, i % 3, first[i]);
+  }
+  ASSERT_EQ(path->AddTransform(3.933536, m), 1) << errors->Last;
+  for (int i = 0; i < 9; ++i)
+  {
+    m->SetElement(i / 3, i % 3, second[i]);
+  }
+  EXPECT_EQ(path->AddTransform(9.409135, m), 0);
+  EXPECT_NE(errors->Last.find("numerically singular"), std::string::npos) << errors->Last;
+  EXPECT_EQ(errors->Last.find("negative"), std::string::npos) << errors->Last;
+  EXPECT_EQ(path->GetNumberOfTransforms(), 1);
+}
+
 TEST(TransformInterpolatorLCT, SplineAndSubdivisionAreC1AcrossKeys)
 {
   // Uniform key times (subdivision is C1 in the key index).
