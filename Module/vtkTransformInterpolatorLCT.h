@@ -14,8 +14,8 @@
  * keeps its length, and no in-between is stretched beyond the keys). Rotations between neighbouring
  * keys take the short way and the logarithms stay near the identity, where they are best
  * conditioned. The result depends on the reference key, so where the two largest weights cross, the
- * results about both are blended along the short geodesic between them (a smoothstep over a weight
- * gap of 0.1): the curve has no jump there and stays C1. See lct/KeyLogs.h.
+ * results about both are blended along the step between them (a smoothstep over a weight gap of
+ * 0.1): the curve has no jump there and stays C1. See lct/KeyLogs.h.
  *
  * Interpolation types: Linear, Spline (interpolating C1 Catmull-Rom on the key times, VTK's
  * default), BSpline (approximating cubic, through the end keys), Subdivision (the 4-point

@@ -22,9 +22,10 @@
  *   polar stretch is turned by the step's rotation before L_r squashes it, so a key squashed to
  *   1/10 blended with one turned by 90 degrees grew to 2.2 times either key in between (47 times
  *   for random keys of stretch up to e^5; session 27). The rotation part still depends on r, so
- * where the two largest weights cross it would jump: within a weight gap of kHandOver the results
- *   about both are blended along the short geodesic between them, R_a (R_a^-1 R_b)^s, with a
- *   smoothstep s that is 1/2 at the crossing: no jump, and C1.
+ *   where the two largest weights cross it would jump: within a weight gap of kHandOver the
+ *   results about both are blended, s times the relative log of the step from one to the other
+ *   applied to the first (lct::relativeLog, lct::applyRelativeStep), with a smoothstep s that
+ *   is 1/2 at the crossing, where either side gives the same point: no jump, and C1.
  * - combineAbsolute: exp(sum_i w_i log M_i): reference-free, keeps the winding of spins.
  *
  * Keys are inserted, replaced and erased in O(kReach^2) logs (plus the absolute chain after the
