@@ -217,8 +217,9 @@ TEST(TransformInterpolatorLCT, NoJumpWhereTheReferenceKeyChangesBetweenStretched
   // Keys R_k diag(100, 1, 0.01) (condition 1e4): the results about the two keys of a segment
   // are blended where their weights cross. The blend took the matrix power of the step between
   // them in the result's own frame, far from normal here; it failed and the curve snapped to
-  // one side: steps of 45 times the others around t = 1.5. Now the step is a relative log
-  // like every other, and no sample step exceeds 1.2 times the median.
+  // one side: a sample step 22 times its neighbours. Now the step is a relative log like every
+  // other, and no sample step exceeds 1.5 times the larger of its two neighbours (a smooth curve
+  // sampled this finely stays within a few percent; its speed over the window may vary more).
   lct_test::RandomTransforms random(11);
   vtkNew<vtkTransformInterpolatorLCT> path;
   vtkNew<vtkMatrix4x4> m;
@@ -243,10 +244,12 @@ TEST(TransformInterpolatorLCT, NoJumpWhereTheReferenceKeyChangesBetweenStretched
       }
       previous = current;
     }
-    std::vector<double> sorted = steps;
-    std::sort(sorted.begin(), sorted.end());
-    const double median = sorted[sorted.size() / 2];
-    EXPECT_LE(sorted.back(), 1.2 * median) << middle;
+    double worst = 0.0;
+    for (std::size_t i = 1; i + 1 < steps.size(); ++i)
+    {
+      worst = std::max(worst, steps[i] / std::max(steps[i - 1], steps[i + 1]));
+    }
+    EXPECT_LE(worst, 1.5) << middle;
   }
 }
 
