@@ -176,13 +176,34 @@ int vtkCameraPathMetric::MeasureSegments(
   }
   add(keys.rbegin()->second, keyViews, keyProjections);
   lct::SegmentPathMetricResult r =
-    lct::measureSegments(keyViews, keyProjections, views, projections, n, points);
+    lct::measureSegments(keyViews, keyProjections, views, projections, n, points, this->Aspect);
   if (r.total.measuredCamera == 0 || r.total.measuredScreen == 0 ||
     !std::isfinite(r.total.camera) || !std::isfinite(r.total.screen))
   {
     vtkErrorMacro(<< caller << ": no point can be measured over the whole path (each moves and "
                   << "comes back, or is behind a camera at some sample); results unchanged.");
     return 0;
+  }
+  // A segment none of whose points can be measured has no value: reading 0 there would say the
+  // path is straight (e.g. VTK's path wandering between two equal key cameras).
+  k = 0;
+  for (auto it = keys.begin(), next = std::next(it); next != keys.end(); ++it, ++next, ++k)
+  {
+    const lct::SegmentExcess& segment = r.segments[k];
+    const bool camera = segment.measuredCamera > 0, screen = segment.measuredScreen > 0;
+    if (!camera || !screen || !std::isfinite(segment.camera) || !std::isfinite(segment.screen))
+    {
+      vtkErrorMacro(<< caller << ": segment " << k << " (key cameras at t = " << it->first
+                    << " and " << next->first << ") cannot be measured "
+                    << (!camera ? "in camera space" : "on the screen") << ": "
+                    << (segment.closedCamera > 0 || segment.closedScreen > 0
+                           ? "every point moves between the keys and ends where it started (the "
+                             "key cameras give the same view), so its excess over a zero chord "
+                             "is unbounded"
+                           : "every point is behind a camera at some sample")
+                    << "; results unchanged.");
+      return 0;
+    }
   }
   this->Segments->Result = std::move(r);
   this->Segments->PassTimes = std::move(pass);
@@ -232,6 +253,14 @@ int vtkCameraPathMetric::EvaluateSegments(vtkCameraInterpolator* path, int lerpW
   if (!path)
   {
     vtkErrorMacro(<< "EvaluateSegments: null path; results unchanged.");
+    return 0;
+  }
+  if (path->GetNumberOfCameras() < 2)
+  {
+    // VTK 9.1 leaves the camera untouched then: the metric would measure a default vtkCamera.
+    vtkErrorMacro(<< "EvaluateSegments: the vtkCameraInterpolator has "
+                  << path->GetNumberOfCameras()
+                  << " cameras; it interpolates none below 2; results unchanged.");
     return 0;
   }
   return this->MeasureSegments(
@@ -343,7 +372,8 @@ int vtkCameraPathMetric::Measure()
       return 0;
     }
   }
-  const lct::PathMetricResult r = lct::measurePath(this->Views, this->Projections, points);
+  const lct::PathMetricResult r =
+    lct::measurePath(this->Views, this->Projections, points, this->Aspect);
   if (r.closedCamera > 0 || r.closedScreen > 0)
   {
     vtkErrorMacro(<< "the path is closed for " << std::max(r.closedCamera, r.closedScreen) << " of "

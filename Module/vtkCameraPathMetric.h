@@ -9,9 +9,12 @@
  * themselves (EvaluateCameras, e.g. from vtkCameraInterpolator for comparison). For each point,
  * l is the length of its sampled path in camera space and l0 the straight chord between its first
  * and last positions; the excess is 100 (l - l0) / l0 percent, averaged over the points (those
- * whose chord is negligible are skipped). ScreenSpaceExcess does the same with the normalised
- * device coordinates of the composite projection (for the given Aspect). A point that is behind
- * the camera or off screen at some sample has left the view.
+ * whose chord is negligible are skipped; negligible is relative to the point's path and
+ * distance, so the measure does not change with the scene's size). ScreenSpaceExcess does the
+ * same on the screen: the normalised device coordinates of the composite projection for the
+ * given Aspect, x times the Aspect, so that both directions count in screen heights as pixels
+ * do (points behind the camera at some sample have no screen path and are left out). A point
+ * that is behind the camera or off screen at some sample has left the view.
  *
  * Lower is better: 0 means every point moves on a straight line, in camera space or on the
  * screen respectively.
@@ -150,8 +153,11 @@ public:
    * the same path reads the same with and without ConstantSpeed (give the metric the path's own
    * keys). Returns 1 on success, 0
    * (with an error, results unchanged) without points or key cameras, with a NaN/Inf point, a
-   * null path, a path that fails at a sample, more than 2e6 samples in all, or when no point can
-   * be measured.
+   * null path, a vtkCameraInterpolator with fewer than 2 cameras, a path that fails at a sample,
+   * more than 2e6 samples in all, when no point can be measured over the path, or when a
+   * segment has no measurable point: every point is behind a camera at some sample of it, or
+   * moves and comes back between two key cameras that give the same view (its excess is
+   * unbounded; it never reads as 0).
    */
   int EvaluateSegments(vtkCameraInterpolatorLCT* path);
   int EvaluateSegments(vtkCameraInterpolator* path, int lerpWindowCenter);

@@ -9,7 +9,7 @@ namespace lct
 PathMetricResult measurePath(
   const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& views,
   const std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>>& projections,
-  const std::vector<Eigen::Vector3d>& points)
+  const std::vector<Eigen::Vector3d>& points, double aspect)
 {
   PathMetricResult out;
   out.leftView.assign(points.size(), 0);
@@ -27,37 +27,47 @@ PathMetricResult measurePath(
     const Eigen::Vector4d p(points[i].x(), points[i].y(), points[i].z(), 1.0);
     double cameraLength = 0.0;
     double screenLength = 0.0;
+    double distance = 0.0; // the point's largest distance from the cameras
+    bool inFront = true;   // at every sample: else the point has no screen path
     Eigen::Vector3d firstCamera = Eigen::Vector3d::Zero(), lastCamera = Eigen::Vector3d::Zero();
     Eigen::Vector2d firstScreen = Eigen::Vector2d::Zero(), lastScreen = Eigen::Vector2d::Zero();
     for (std::size_t s = 0; s < samples; ++s)
     {
       const Eigen::Vector3d c = (views[s] * p).head<3>();
       const Eigen::Vector4d clip = projections[s] * p;
-      const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
-      if (!(clip.w() > 0.0) || std::abs(ndc.x()) > 1.0 || std::abs(ndc.y()) > 1.0)
+      // Behind the camera, x / w and y / w are finite but mirrored: no screen position.
+      const bool front = clip.w() > 0.0;
+      const Eigen::Vector2d ndc =
+        front ? Eigen::Vector2d(clip.head<2>() / clip.w()) : Eigen::Vector2d::Zero();
+      if (!front || std::abs(ndc.x()) > 1.0 || std::abs(ndc.y()) > 1.0)
       {
         out.leftView[i] = 1;
       }
+      inFront = inFront && front;
+      const Eigen::Vector2d screen(aspect * ndc.x(), ndc.y());
+      distance = std::max(distance, c.norm());
       if (s > 0)
       {
         cameraLength += (c - lastCamera).norm();
-        screenLength += (ndc - lastScreen).norm();
+        screenLength += (screen - lastScreen).norm();
       }
       else
       {
         firstCamera = c;
-        firstScreen = ndc;
+        firstScreen = screen;
       }
       lastCamera = c;
-      lastScreen = ndc;
+      lastScreen = screen;
     }
+    // Relative to the point's own path and distance in camera space: an absolute 1e-9 read
+    // every point of a scene of size 1e-10 as still, and its excess as 0.
     const double cameraChord = (lastCamera - firstCamera).norm();
-    if (cameraChord > kNegligible * (1.0 + cameraLength))
+    if (cameraChord > kNegligible * cameraLength)
     {
       cameraSum += 100.0 * (cameraLength - cameraChord) / cameraChord;
       ++out.pointsMeasuredCamera;
     }
-    else if (cameraLength <= kNegligible * (1.0 + firstCamera.norm()))
+    else if (cameraLength <= kNegligible * distance)
     {
       ++out.pointsMeasuredCamera; // still: no excess
     }
@@ -65,7 +75,7 @@ PathMetricResult measurePath(
     {
       ++out.closedCamera;
     }
-    if (!std::isfinite(screenLength))
+    if (!inFront || !std::isfinite(screenLength))
     {
       continue; // behind the camera at some sample: no screen path (it left the view)
     }
@@ -75,7 +85,7 @@ PathMetricResult measurePath(
       screenSum += 100.0 * (screenLength - screenChord) / screenChord;
       ++out.pointsMeasuredScreen;
     }
-    else if (screenLength <= kNegligible * (1.0 + firstScreen.norm()))
+    else if (screenLength <= kNegligible)
     {
       ++out.pointsMeasuredScreen;
     }

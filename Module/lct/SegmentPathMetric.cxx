@@ -19,28 +19,38 @@ struct Projected
   bool inView = false;
 };
 
-Projected project(
-  const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection, const Eigen::Vector4d& p)
+Projected project(const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection,
+  const Eigen::Vector4d& p, double aspect)
 {
   Projected out;
   out.camera = (view * p).head<3>();
   const Eigen::Vector4d clip = projection * p;
   out.inFront = clip.w() > 0.0;
-  out.screen = out.inFront ? Eigen::Vector2d(clip.head<2>() / clip.w()) : Eigen::Vector2d::Zero();
-  out.inView = out.inFront && std::abs(out.screen.x()) <= 1.0 && std::abs(out.screen.y()) <= 1.0;
+  const Eigen::Vector2d ndc =
+    out.inFront ? Eigen::Vector2d(clip.head<2>() / clip.w()) : Eigen::Vector2d::Zero();
+  out.inView = out.inFront && std::abs(ndc.x()) <= 1.0 && std::abs(ndc.y()) <= 1.0;
+  // In units of half the screen height in both directions, as pixels are: NDC x spans the
+  // width, so on a wide viewport it would count a horizontal motion as shorter than a vertical
+  // one of the same pixels.
+  out.screen = Eigen::Vector2d(aspect * ndc.x(), ndc.y());
   return out;
 }
 
 /// Adds the excess of one point to a running mean: 0 when it does not move, left out (closed)
-/// when it moves but its chord is negligible.
-void addExcess(double length, double chord, double scale, double& sum, int& measured, int& closed)
+/// when it moves but its chord is negligible. `unit` is the measure's own unit (1 on the screen,
+/// whose coordinates are those of the viewport) or 0 in camera space, where `scale` (the
+/// point's distance from the key cameras) sets the size: the tests stay relative to it, so that
+/// a scene of size 1e-10 is measured as one of size 1 (with an absolute 1e-9 every point of it
+/// read as still, and its excess as 0).
+void addExcess(
+  double length, double chord, double unit, double scale, double& sum, int& measured, int& closed)
 {
-  if (chord > kNegligible * (1.0 + length))
+  if (chord > kNegligible * (unit + length))
   {
     sum += 100.0 * (length - chord) / chord;
     ++measured;
   }
-  else if (length <= kNegligible * (1.0 + scale))
+  else if (length <= kNegligible * (unit + scale))
   {
     ++measured;
   }
@@ -54,7 +64,7 @@ void addExcess(double length, double chord, double scale, double& sum, int& meas
 SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
   const Matrices4d& keyProjections, const Matrices4d& sampleViews,
   const Matrices4d& sampleProjections, int samplesPerSegment,
-  const std::vector<Eigen::Vector3d>& points)
+  const std::vector<Eigen::Vector3d>& points, double aspect)
 {
   SegmentPathMetricResult out;
   const int keys = static_cast<int>(keyViews.size());
@@ -90,10 +100,10 @@ SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
     double lengthCamera = 0.0, chordCamera = 0.0, lengthScreen = 0.0, chordScreen = 0.0;
     double scale = 0.0;
     bool screenValid = true, left = false;
-    Projected key = project(keyViews[0], keyProjections[0], p);
+    Projected key = project(keyViews[0], keyProjections[0], p, aspect);
     for (int k = 0; k < segments; ++k)
     {
-      const Projected next = project(keyViews[k + 1], keyProjections[k + 1], p);
+      const Projected next = project(keyViews[k + 1], keyProjections[k + 1], p, aspect);
       SegmentExcess& segment = out.segments[k];
       double l = 0.0, ls = 0.0;
       bool screenOk = key.inFront && next.inFront, leftHere = false;
@@ -101,7 +111,7 @@ SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
       for (int s = 0; s < samplesPerSegment; ++s)
       {
         const std::size_t j = static_cast<std::size_t>(k) * samplesPerSegment + s;
-        const Projected q = project(sampleViews[j], sampleProjections[j], p);
+        const Projected q = project(sampleViews[j], sampleProjections[j], p, aspect);
         l += (q.camera - previous.camera).norm();
         ls += (q.screen - previous.screen).norm();
         screenOk = screenOk && q.inFront;
@@ -123,10 +133,10 @@ SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
       const double c = (next.camera - key.camera).norm();
       const double cs = (next.screen - key.screen).norm();
       scale = std::max({ scale, key.camera.norm(), next.camera.norm() });
-      addExcess(l, c, scale, cameraSum[k], segment.measuredCamera, segment.closedCamera);
+      addExcess(l, c, 0.0, scale, cameraSum[k], segment.measuredCamera, segment.closedCamera);
       if (screenOk)
       {
-        addExcess(ls, cs, 1.0, screenSum[k], segment.measuredScreen, segment.closedScreen);
+        addExcess(ls, cs, 1.0, 0.0, screenSum[k], segment.measuredScreen, segment.closedScreen);
       }
       if (key.inView && next.inView && leftHere)
       {
@@ -140,11 +150,11 @@ SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
       screenValid = screenValid && screenOk;
       key = next;
     }
-    addExcess(lengthCamera, chordCamera, scale, totalCamera, out.total.measuredCamera,
+    addExcess(lengthCamera, chordCamera, 0.0, scale, totalCamera, out.total.measuredCamera,
       out.total.closedCamera);
     if (screenValid)
     {
-      addExcess(lengthScreen, chordScreen, 1.0, totalScreen, out.total.measuredScreen,
+      addExcess(lengthScreen, chordScreen, 1.0, 0.0, totalScreen, out.total.measuredScreen,
         out.total.closedScreen);
     }
     out.total.leavingView += left ? 1 : 0;

@@ -17,17 +17,21 @@
  * - segment excess: 100 (l_k - l0_k) / l0_k, averaged over the points; total excess:
  *   100 (sum_k l_k - sum_k l0_k) / sum_k l0_k, i.e. against the polygon through the key
  *   positions, averaged over the points;
- * - in camera space (the view matrix times the point) and on the screen (normalised device
- *   coordinates x, y of the composite projection);
+ * - in camera space (the view matrix times the point) and on the screen: the normalised device
+ *   coordinates x, y of the composite projection, x times the viewport's aspect (width / height),
+ *   so that both are in units of half the screen height and a distance is the same whichever
+ *   way it points, as in pixels;
  * - key miss at key k: the mean over the points of |path(t_k) - K_k| in camera space, in % of
- *   the point's distance from the key camera, and on the screen in % of the screen height
- *   (NDC distance / 2);
+ *   the point's distance from the key camera, and on the screen in % of the screen height;
  * - points leaving the view on segment k: in front of the camera and within [-1, 1]^2 at both
  *   true keys, and not so at some sample of the segment (a point outside the view at a key is
  *   the user's framing, not the path's doing).
  *
- * A point with a negligible chord on a segment counts as 0 when it does not move there either,
- * and is left out of that segment's mean (counted in `still`) when it moves and comes back. A
+ * A point with a negligible chord on a segment (1e-9 of its path there; in camera space relative
+ * to the point's distance from the cameras, so the measure does not change with the scene's
+ * size) counts as 0 when it does not move there either, and is left out of that segment's mean
+ * (counted in `closedCamera` / `closedScreen`) when it moves and comes back: callers must not
+ * report a segment whose every point is left out as 0 (its excess is unbounded). A
  * point behind the camera at a sample has no screen path on that segment and is left out of its
  * screen mean (and the total screen mean).
  */
@@ -75,12 +79,13 @@ struct SegmentPathMetricResult
 /// The metric of a path with keyViews.size() = n + 1 keys (view and composite projection
 /// matrices, world to camera / clip coordinates) and samplesPerSegment samples per segment
 /// (sample s of segment k at index k * samplesPerSegment + s; s = 0 at key k, the last at key
-/// k + 1). Preconditions: n >= 1, samplesPerSegment >= 2, the sizes consistent, every matrix
-/// finite (callers validate).
+/// k + 1) and the viewport's aspect (width / height, that of the projections). Preconditions:
+/// n >= 1, samplesPerSegment >= 2, the sizes consistent, every matrix finite, aspect > 0
+/// (callers validate).
 VTKLCT_EXPORT SegmentPathMetricResult measureSegments(const Matrices4d& keyViews,
   const Matrices4d& keyProjections, const Matrices4d& sampleViews,
   const Matrices4d& sampleProjections, int samplesPerSegment,
-  const std::vector<Eigen::Vector3d>& points);
+  const std::vector<Eigen::Vector3d>& points, double aspect = 1.0);
 
 } // namespace lct
 

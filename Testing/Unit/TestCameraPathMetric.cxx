@@ -214,3 +214,48 @@ TEST(CameraPathMetric, LctPathsMoveThePointsLessThanVtkCameraInterpolator)
   EXPECT_LT(lct[0], vtk[0]);
   EXPECT_LT(lct[1], vtk[1]);
 }
+
+// Audit (session 28): behind the camera, x / w and y / w are finite but mirrored, and the
+// whole-path measure averaged them in (only w = 0 exactly was caught). A point behind the camera
+// at some sample now has no screen path, as in the per-segment measure.
+TEST(CameraPathMetric, APointBehindTheCameraHasNoScreenPath)
+{
+  vtkNew<vtkCollection> cameras;
+  for (int i = 0; i <= 10; ++i)
+  {
+    // A dolly through the scene: from z = 10 to z = -10, looking down -z.
+    vtkNew<vtkCamera> camera;
+    const double z = 10.0 - 2.0 * i;
+    camera->SetPosition(0.1 * i, 0, z);
+    camera->SetFocalPoint(0.1 * i, 0, z - 10);
+    camera->SetViewUp(0, 1, 0);
+    cameras->AddItem(camera);
+  }
+  const auto points = [](bool passed, bool ahead) {
+    auto p = vtkSmartPointer<vtkPoints>::New();
+    if (passed)
+    {
+      p->InsertNextPoint(0.5, 0.3, 0.0); // behind the camera from z < 0 on
+    }
+    if (ahead)
+    {
+      p->InsertNextPoint(0.2, 0.1, -50.0); // in front all along
+    }
+    return p;
+  };
+  vtkNew<vtkCameraPathMetric> metric;
+  vtkNew<lct_test::ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  metric->SetPoints(points(false, true));
+  ASSERT_EQ(metric->EvaluateCameras(cameras), 1);
+  const double ahead = metric->GetScreenSpaceExcess();
+  metric->SetPoints(points(true, true));
+  ASSERT_EQ(metric->EvaluateCameras(cameras), 1);
+  EXPECT_EQ(metric->GetScreenSpaceExcess(), ahead);
+  EXPECT_EQ(metric->GetPointLeftView(0), 1);
+  metric->SetPoints(points(true, false));
+  EXPECT_EQ(metric->EvaluateCameras(cameras), 0);
+  EXPECT_NE(errors->Last.find("no point stays in front of the camera"), std::string::npos)
+    << errors->Last;
+  EXPECT_EQ(metric->GetScreenSpaceExcess(), ahead);
+}

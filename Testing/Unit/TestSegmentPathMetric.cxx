@@ -6,9 +6,12 @@
 
 #include "vtkCameraPathMetric.h"
 
+#include "VtkTestHelpers.h"
+
 #include "vtkCamera.h"
 #include "vtkCameraInterpolator.h"
 #include "vtkCameraInterpolatorLCT.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -296,5 +299,171 @@ TEST(SegmentPathMetric, ConstantSpeedPathReadsAsTheSamePath)
   ASSERT_EQ(metric->AddKeyCamera(4, extra), 1);
   const double kept = metric->GetTotalCameraSpaceExcess();
   EXPECT_EQ(metric->EvaluateSegments(path), 0);
+  EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
+}
+
+namespace
+{
+/// Key cameras orbiting the origin by 0.7 rad per key at distance 10 s, and points of size s.
+struct ScaledOrbit
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCameraPathMetric> metric;
+  explicit ScaledOrbit(double s)
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->InsertNextPoint(0.3 * s, 0.2 * s, 0.1 * s);
+    points->InsertNextPoint(-0.4 * s, 0.1 * s, 0.5 * s);
+    this->metric->SetPoints(points);
+    for (int k = 0; k < 4; ++k)
+    {
+      vtkNew<vtkCamera> key;
+      key->SetFocalPoint(0, 0, 0);
+      key->SetPosition(10 * s * std::sin(0.7 * k), 0, 10 * s * std::cos(0.7 * k));
+      key->SetViewUp(0, 1, 0);
+      this->path->AddCamera(k, key);
+      this->metric->AddKeyCamera(k, key);
+    }
+  }
+};
+} // namespace
+
+// Audit (session 28): the negligible-chord and still tests were absolute (1e-9 (1 + length)), so
+// in a scene of size 1e-9 the segments read 0 % and the total half its value, and at 1e-10 every
+// point counted as still (0 %). Camera space is now measured relative to the scene.
+TEST(SegmentPathMetric, TheSceneSizeDoesNotChangeTheMeasure)
+{
+  ScaledOrbit unit(1.0);
+  ASSERT_EQ(unit.metric->EvaluateSegments(unit.path), 1);
+  // Every camera-space path is an arc of 0.7 rad: theta / (2 sin(theta / 2)) - 1.
+  const double arc = 100.0 * (0.7 / (2 * std::sin(0.35)) - 1.0);
+  EXPECT_NEAR(unit.metric->GetSegmentCameraSpaceExcess(1), arc, 1e-2);
+  for (double s : { 1e-9, 1e-10, 1e-14, 1e-18, 1e100 })
+  {
+    ScaledOrbit scaled(s);
+    ASSERT_EQ(scaled.metric->EvaluateSegments(scaled.path), 1) << s;
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_NEAR(scaled.metric->GetSegmentCameraSpaceExcess(k),
+        unit.metric->GetSegmentCameraSpaceExcess(k), 1e-6)
+        << "scene size " << s << ", segment " << k;
+      EXPECT_NEAR(scaled.metric->GetSegmentScreenSpaceExcess(k),
+        unit.metric->GetSegmentScreenSpaceExcess(k), 1e-6)
+        << "scene size " << s << ", segment " << k;
+    }
+    EXPECT_NEAR(
+      scaled.metric->GetTotalCameraSpaceExcess(), unit.metric->GetTotalCameraSpaceExcess(), 1e-6)
+      << s;
+    // The older whole-path measure likewise (a quarter orbit read 6.57 % at 1e-9, 0 at 1e-12).
+    ASSERT_EQ(unit.metric->EvaluateInterpolator(unit.path, 0, 3), 1);
+    ASSERT_EQ(scaled.metric->EvaluateInterpolator(scaled.path, 0, 3), 1) << s;
+    EXPECT_NEAR(scaled.metric->GetCameraSpaceExcess(), unit.metric->GetCameraSpaceExcess(), 1e-6)
+      << s;
+  }
+}
+
+// Audit (session 28): screen distances were in NDC, whose x spans the width: a window-centre
+// miss of 0.4 read "20 % of the screen height" at aspect 3 as at aspect 1 (it is 60 %), and the
+// screen excess of the same cameras changed with the aspect (0.178 to 0.0945 %).
+TEST(SegmentPathMetric, ScreenDistancesAreInScreenHeightsWhateverTheAspect)
+{
+  vtkNew<vtkCameraInterpolator> vtk;
+  vtkNew<vtkCameraInterpolatorLCT> lct;
+  vtkNew<vtkCameraPathMetric> metric;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetFocalPoint(0, 0, 0);
+    key->SetPosition(8 * std::sin(0.6 * k), 1 + k, 8 * std::cos(0.6 * k));
+    key->SetViewUp(0, 1, 0);
+    key->SetWindowCenter(k == 1 ? 0.4 : 0.0, 0.0);
+    vtk->AddCamera(k, key);
+    ASSERT_EQ(metric->AddKeyCamera(k, key), 1);
+    key->SetWindowCenter(0.0, 0.0);
+    ASSERT_EQ(lct->AddCamera(k, key), 1);
+  }
+  vtkNew<vtkPoints> points;
+  for (const auto& p : randomPoints(100, -1.5, 1.5))
+  {
+    points->InsertNextPoint(p.data());
+  }
+  metric->SetPoints(points);
+  ASSERT_EQ(metric->SetAspect(1.0), 1);
+  ASSERT_EQ(metric->EvaluateSegments(vtk, 0), 1);
+  EXPECT_NEAR(metric->GetKeyMissScreenSpace(1), 20.0, 1e-9);
+  ASSERT_EQ(metric->SetAspect(3.0), 1);
+  ASSERT_EQ(metric->EvaluateSegments(vtk, 0), 1);
+  EXPECT_NEAR(metric->GetKeyMissScreenSpace(1), 60.0, 1e-9); // 0.4 of the width, 3 heights wide
+  // Without window centres the same cameras move the points by the same pixels at any aspect
+  // (the view angle is vertical), so the screen excess must not change.
+  metric->RemoveAllKeyCameras();
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    ASSERT_EQ(lct->InterpolateCamera(k, key), 1); // the key itself
+    ASSERT_EQ(metric->AddKeyCamera(k, key), 1);
+  }
+  ASSERT_EQ(metric->SetAspect(1.0), 1);
+  ASSERT_EQ(metric->EvaluateSegments(lct), 1);
+  const double square = metric->GetTotalScreenSpaceExcess();
+  ASSERT_EQ(metric->SetAspect(3.0), 1);
+  ASSERT_EQ(metric->EvaluateSegments(lct), 1);
+  EXPECT_GT(square, 0.01);
+  EXPECT_NEAR(metric->GetTotalScreenSpaceExcess(), square, 1e-9 * square);
+  for (int k = 0; k < 2; ++k)
+  {
+    ASSERT_EQ(metric->SetAspect(1.0), 1);
+    ASSERT_EQ(metric->EvaluateSegments(lct), 1);
+    const double segment = metric->GetSegmentScreenSpaceExcess(k);
+    ASSERT_EQ(metric->SetAspect(0.5), 1);
+    ASSERT_EQ(metric->EvaluateSegments(lct), 1);
+    EXPECT_NEAR(metric->GetSegmentScreenSpaceExcess(k), segment, 1e-9 * segment) << k;
+  }
+}
+
+// Audit (session 28): a segment between two equal key cameras along which VTK's path wanders
+// and comes back read 0 % ("moves on a straight line") with status 1, and a vtkCameraInterpolator
+// without cameras was measured as the default vtkCamera (3608 %, status 1).
+TEST(SegmentPathMetric, ASegmentThatCannotBeMeasuredIsAnErrorNotZero)
+{
+  vtkNew<vtkCameraPathMetric> metric;
+  vtkNew<lct_test::ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.3, 0.2, 0.1);
+  points->InsertNextPoint(-0.4, 0.1, 0.5);
+  metric->SetPoints(points);
+  vtkNew<vtkCameraInterpolator> vtk;
+  vtkNew<vtkCameraInterpolatorLCT> lct;
+  const double positions[4][3] = { { 0, 0, 10 }, { 5, 0, 8 }, { 5, 0, 8 }, { 10, 0, 0 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(positions[k][0], positions[k][1], positions[k][2]);
+    key->SetFocalPoint(0, 0, 0);
+    key->SetViewUp(0, 1, 0);
+    vtk->AddCamera(k, key);
+    ASSERT_EQ(lct->AddCamera(k, key), 1);
+    ASSERT_EQ(metric->AddKeyCamera(k, key), 1);
+  }
+  // LCT's path stands still between the equal keys: 0 % there is the measure, not a default.
+  ASSERT_EQ(metric->EvaluateSegments(lct), 1);
+  EXPECT_EQ(metric->GetSegmentCameraSpaceExcess(1), 0.0);
+  const double kept = metric->GetTotalCameraSpaceExcess();
+  EXPECT_EQ(metric->EvaluateSegments(vtk, 0), 0);
+  EXPECT_NE(errors->Last.find("segment 1 (key cameras at t = 1 and 2) cannot be measured"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_NE(errors->Last.find("unbounded"), std::string::npos) << errors->Last;
+  EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
+  vtkNew<vtkCameraInterpolator> empty, single;
+  EXPECT_EQ(metric->EvaluateSegments(empty, 0), 0);
+  EXPECT_NE(errors->Last.find("has 0 cameras"), std::string::npos) << errors->Last;
+  vtkNew<vtkCamera> one;
+  one->SetPosition(0, 0, 10);
+  single->AddCamera(0, one);
+  EXPECT_EQ(metric->EvaluateSegments(single, 0), 0);
+  EXPECT_NE(errors->Last.find("has 1 cameras"), std::string::npos) << errors->Last;
   EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
 }
