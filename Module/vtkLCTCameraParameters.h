@@ -31,6 +31,17 @@ inline lct::CameraParameters FromVtk(vtkCamera* camera)
 
 inline void ToVtk(const lct::CameraParameters& c, vtkCamera* camera)
 {
+  const Eigen::Vector3d back = c.position - c.focalPoint;
+  if (back.norm() < 2.0 * lct::kMinCameraDistance)
+  {
+    // vtkCamera recomputes the distance from the coordinates and clamps it to 1e-20 along its
+    // PREVIOUS direction of projection (ComputeDistance): near that minimum, an ulp below it
+    // turned the camera to wherever it looked before. Look the right way first (positions this
+    // close are within 2e-8 of the origin, so a step of 1e-10 is exact enough and not clamped).
+    camera->SetPosition(c.position.data());
+    const Eigen::Vector3d ahead = c.position - 1e-10 * back.normalized();
+    camera->SetFocalPoint(ahead.data());
+  }
   camera->SetFocalPoint(c.focalPoint.data());
   camera->SetPosition(c.position.data());
   camera->SetViewUp(c.viewUp.data());

@@ -54,16 +54,17 @@ Result<CameraKey> toCameraKey(const CameraParameters& c, const char** why)
   }
   const Eigen::Vector3d back = c.position - c.focalPoint;
   const double distance = back.stableNorm();
-  // Relative to the coordinates (a scene 1e-12 across is as good as one 1e12 across), and
-  // above 1e-150, where vtkCamera's squared distances would underflow.
+  // Relative to the coordinates (a scene 1e-12 across is as good as one 1e12 across), and at
+  // least vtkCamera's minimum distance, below which it moves the focal point.
   const double scale =
     std::max(c.position.cwiseAbs().maxCoeff(), c.focalPoint.cwiseAbs().maxCoeff());
-  if (!(distance > 1e-12 * scale) || !(distance > 1e-150))
+  // (Within round-off of it: vtkCamera's own sum of squares may differ by an ulp.)
+  if (!(distance > 1e-12 * scale) || !(distance >= kMinCameraDistance * (1.0 - 1e-12)))
   {
     return failure<K>(Status::InvalidArgument,
       distance == 0.0              ? "the position equals the focal point"
-        : distance > 1e-12 * scale ? "the position and the focal point are closer than 1e-150 "
-                                     "(vtkCamera squares distances)"
+        : distance > 1e-12 * scale ? "the position and the focal point are closer than 1e-20 "
+                                     "(vtkCamera clamps shorter distances, moving the focal point)"
                                    : "the position and the focal point are closer than 1e-12 of "
                                      "their magnitude (no view direction)",
       why);
@@ -140,7 +141,19 @@ Result<CameraParameters> fromCameraKey(const CameraKey& key, const char** why)
   {
     return failure<C>(Status::OutOfRange, "the interpolated parallel scale exceeds 1e150", why);
   }
-  const double distance = std::exp(ch[CameraKey::LogDistance]);
+  double distance = std::exp(ch[CameraKey::LogDistance]);
+  // Between keys at vtkCamera's minimum distance the exp may round just below it.
+  if (distance < kMinCameraDistance && distance >= kMinCameraDistance * (1.0 - 1e-12))
+  {
+    distance = kMinCameraDistance;
+  }
+  if (!(distance >= kMinCameraDistance) && distance > 0.0)
+  {
+    return failure<C>(Status::OutOfRange,
+      "the interpolated distance is below 1e-20, which vtkCamera cannot hold (it clamps it, "
+      "moving the focal point)",
+      why);
+  }
   CameraParameters c;
   c.focalPoint = key.focalFrame.block<3, 1>(0, 3);
   c.position = c.focalPoint + distance * key.focalFrame.block<3, 1>(0, 2);

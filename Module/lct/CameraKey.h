@@ -78,11 +78,16 @@ struct CameraKey
 /// squares distances (ComputeDistance, the view transform), which overflows beyond ~1e154.
 constexpr double kMaxCameraMagnitude = 1e150;
 
+/// The smallest distance between the position and the focal point: vtkCamera clamps shorter ones
+/// to it (ComputeDistance), moving the focal point along its previous direction of projection.
+constexpr double kMinCameraDistance = 1e-20;
+
 /// The key of a camera. Fails with NonFinite (a NaN or Inf parameter), OutOfRange (a magnitude
 /// beyond kMaxCameraMagnitude) or InvalidArgument for a degenerate camera: position at the focal
-/// point, view up zero or parallel to the view direction, view angle outside (0, 180), parallel
-/// scale <= 0, or clipping range not 0 < near < far. `why`, when given, receives a phrase naming
-/// the one condition that failed (e.g. "the position equals the focal point").
+/// point or closer to it than kMinCameraDistance, view up zero or parallel to the view direction,
+/// view angle outside (0, 180), parallel scale <= 0, or clipping range not 0 < near < far. `why`,
+/// when given, receives a phrase naming the one condition that failed (e.g. "the position equals
+/// the focal point").
 VTKLCT_EXPORT Result<CameraKey> toCameraKey(
   const CameraParameters& camera, const char** why = nullptr);
 

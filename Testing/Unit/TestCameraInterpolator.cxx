@@ -317,6 +317,47 @@ TEST(CameraInterpolatorLCT, SmallScenesAreKeysLikeAnyOther)
   EXPECT_EQ(errors->Count, 0);
 }
 
+// Audit (session 28): vtkCamera clamps a distance below 1e-20 along its PREVIOUS direction of
+// projection. Keys exactly 1e-20 from their focal point gave in-betweens an ulp below it, and
+// the output camera looked wherever it looked before (down -z, with status 1); a core key closer
+// than that was accepted and then moved by vtkCamera.
+TEST(CameraInterpolatorLCT, DistancesAtVtkCamerasMinimumKeepTheirDirection)
+{
+  vtkNew<vtkCameraInterpolatorLCT> interpolator;
+  vtkNew<ErrorCounter> errors;
+  interpolator->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetFocalPoint(0, 0, 0);
+    key->SetPosition(1e-20 * std::sin(0.7 * k), 0, 1e-20 * std::cos(0.7 * k));
+    key->SetViewUp(0, 1, 0);
+    key->SetClippingRange(1e-22, 1e-18);
+    ASSERT_EQ(interpolator->AddCamera(k, key), 1) << errors->Last;
+  }
+  for (int s = 0; s <= 40; ++s)
+  {
+    const double t = 2.0 * s / 40.0;
+    // Each output starts from a camera that looks elsewhere (down -z, or where it was last).
+    vtkNew<vtkCamera> out;
+    out->SetPosition(0, 0, 1);
+    out->SetFocalPoint(0, 0, 5);
+    ASSERT_EQ(interpolator->InterpolateCamera(t, out), 1) << errors->Last;
+    const double* d = out->GetDirectionOfProjection();
+    // The orbit turns by 0.7 rad per key: the camera looks back at the focal point from there.
+    EXPECT_NEAR(d[0], -std::sin(0.7 * t), 1e-6) << t;
+    EXPECT_NEAR(d[2], -std::cos(0.7 * t), 1e-6) << t;
+    EXPECT_GE(out->GetDistance(), 1e-20);
+    EXPECT_LE(std::abs(out->GetFocalPoint()[2]), 1e-26) << t;
+  }
+  lct::CameraParameters closer;
+  closer.position = Eigen::Vector3d(0, 0, 9e-21);
+  const char* why = "";
+  EXPECT_FALSE(lct::toCameraKey(closer, &why).ok());
+  EXPECT_NE(std::string(why).find("closer than 1e-20 (vtkCamera clamps"), std::string::npos) << why;
+  EXPECT_EQ(errors->Count, 0);
+}
+
 // ConstantSpeed on a path whose eye and focal point stay put (a zoom, a roll): every interval is
 // still, so the keys keep their times. The eye's round-off (1e-15) set the timing before.
 TEST(CameraInterpolatorLCT, ConstantSpeedKeepsTheTimesOfAStillPath)
@@ -397,13 +438,13 @@ TEST(CameraInterpolatorLCT, BadKeysAreRejectedAndLeaveTheInterpolatorUnchanged)
   EXPECT_EQ(interpolator->InterpolateCamera(std::nan(""), out), 0);
   EXPECT_EQ(errors->Count, ++expected);
   {
-    // 1e-160 apart (vtkCamera itself keeps 1e-20, so only the core sees it): its squared
-    // distance would underflow.
+    // 1e-160 apart (vtkCamera itself keeps 1e-20, so only the core sees it): vtkCamera would
+    // clamp it, moving the focal point.
     lct::CameraParameters c;
     c.position = Eigen::Vector3d(0, 0, 1e-160);
     const char* why = "";
     EXPECT_FALSE(lct::toCameraKey(c, &why).ok());
-    EXPECT_NE(std::string(why).find("closer than 1e-150"), std::string::npos) << why;
+    EXPECT_NE(std::string(why).find("closer than 1e-20"), std::string::npos) << why;
   }
   // SetMethod clamped 7 to CameraMatrix and -3 to FocalFrame, returning 1.
   EXPECT_EQ(interpolator->SetMethod(7), 0);
