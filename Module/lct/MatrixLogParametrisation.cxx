@@ -203,6 +203,12 @@ BlockFunction blockFunction(
 /// Pairs with |Im| / -Re below this (turns beyond 135 degrees) are checked a posteriori.
 constexpr double kCheckedPairSlope = 1.0;
 
+/// Pairs with |Im| / -Re below this (turns within ~1e-6 rad of a half turn) are refused: there
+/// the log's forward error, ~eps pi / slope, exceeds 1e-9, and the a posteriori round trip cannot
+/// see it (exp maps the whole family of logs of a block near -I close to it). A rotation 2e-15
+/// short of a half turn came back with a stretch of 0.33 in its log and passed the round trip.
+constexpr double kRefusedPairSlope = 1e-6;
+
 /// exp(log M) == M to 1e-12, relative, block by block (a large translation must not hide an
 /// error in the linear part).
 bool accurateRoundTrip(const Eigen::Matrix4d& back, const Eigen::Matrix4d& m)
@@ -391,6 +397,10 @@ Result<LogCoords> matrixLog(const Eigen::Matrix4d& m)
     {
       return R::failure(Status::OutOfRange);
     }
+  }
+  if (block.nearestToNegativeAxis < kRefusedPairSlope)
+  {
+    return R::failure(Status::NoRealLogarithm);
   }
   R out{ packLog(block.linear, block.translation), Status::Ok };
   // A conjugate pair close to the negative real axis (turns beyond 135 degrees): there the

@@ -523,6 +523,49 @@ TEST(MatrixLog, PowerMatchesExpOfScaledLogNearAndFarFromIdentity)
     lct::matrixPower(Eigen::Matrix4d::Identity(), std::nan("")).status, lct::Status::NonFinite);
 }
 
+// Audit (session 28): near a half turn the matrix log is ill-conditioned (forward error ~ eps pi
+// / (pi - theta)), and exp maps the whole family of logs of a block near -I close to it, so the
+// round-trip check passed a rotation 2e-15 short of a half turn whose log had a stretch of 0.33:
+// its half power was visibly stretched, and the basis factoring reported wrong coefficients with
+// a tiny error bound. MatrixLog now either gives the rotation's own log (skew, theta a) or
+// refuses; Polar gives it always.
+TEST(MatrixLog, RotationsNearAHalfTurnGiveTheirLogOrAnError)
+{
+  lct_test::RandomTransforms random(2800);
+  int accepted = 0, refused = 0;
+  for (double shortOf :
+    { 1e-15, 2e-15, 5e-15, 1e-14, 2e-14, 1e-13, 1e-12, 1e-10, 1e-8, 1e-7, 3e-7, 1e-5, 1e-3 })
+  {
+    for (int i = 0; i < 300; ++i)
+    {
+      const Eigen::Vector3d axis = random.UnitVector();
+      const double angle = lct_test::kPi - shortOf;
+      Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+      m.topLeftCorner<3, 3>() = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+      const auto log = lct::matrixLog(m);
+      const auto polar = lct::polarLog(m);
+      ASSERT_TRUE(polar.ok());
+      EXPECT_LT(lct::symmetricPart(polar.value).norm(), 1e-15);
+      if (!log.ok())
+      {
+        EXPECT_EQ(log.status, lct::Status::NoRealLogarithm);
+        // (The round-trip check refuses turns up to ~1e-4 short, where eps / slope exceeds it.)
+        EXPECT_LT(shortOf, 1e-3) << "refused a turn " << shortOf << " short of a half turn";
+        ++refused;
+        continue;
+      }
+      ++accepted;
+      // The log of a rotation is skew: no stretch, and the turn angle * axis (either sign of a
+      // turn this close to pi is within the tolerance of the other only at the cut).
+      EXPECT_LT(lct::symmetricPart(log.value).norm(), 1e-9) << shortOf << " " << axis.transpose();
+      const Eigen::Vector3d w = lct::rotationPart(log.value);
+      EXPECT_LT(std::min((w - angle * axis).norm(), (w + angle * axis).norm()), 1e-9) << shortOf;
+    }
+  }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(refused, 0);
+}
+
 TEST(Polar, RigidMapsHaveAnExactlyZeroStretch)
 {
   // So that blends of rigid maps are exactly rigid and take polarExp's rotation-only path.
