@@ -132,7 +132,9 @@ public:
   int GetExplainedVariance(vtkDoubleArray* fractions);
 
   /**
-   * The fraction of the variance the first r components explain (0 with an error for r < 0).
+   * The fraction of the variance the first r components explain (0 with an error for r < 0);
+   * r beyond GetNumberOfComponents() counts the kept ones only, as GetReconstructedTransform
+   * does.
    */
   double GetExplainedFraction(int components);
 

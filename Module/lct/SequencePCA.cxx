@@ -31,7 +31,9 @@ double SequencePCA::explainedFraction(int r) const noexcept
   {
     return r > 0 ? 1.0 : 0.0;
   }
-  const Eigen::Index k = std::clamp<Eigen::Index>(r, 0, n);
+  // Only the kept components explain anything: with 1 kept, asking for 5 read 100 % while the
+  // reconstruction from 5 uses the 1 (and was off by 1.04).
+  const Eigen::Index k = std::clamp<Eigen::Index>(r, 0, std::min<Eigen::Index>(n, this->size()));
   const Eigen::VectorXd unit = this->singularValues / this->singularValues[0];
   return unit.head(k).squaredNorm() / unit.squaredNorm();
 }

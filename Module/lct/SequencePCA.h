@@ -56,7 +56,8 @@ struct SequencePCA
 
   int size() const noexcept { return static_cast<int>(this->components.cols()); }
 
-  /// The fraction of the total (weighted) variance that the first r components explain.
+  /// The fraction of the total (weighted) variance that the first r kept components explain (r
+  /// clamped to the kept ones, as the reconstruction is).
   double explainedFraction(int r) const noexcept;
 
   /// The fraction of the total variance along one component (0 outside [0, size of

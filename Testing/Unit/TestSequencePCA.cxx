@@ -223,6 +223,45 @@ TEST(SequencePCA, TruncationErrorIsTheDroppedVarianceAndWeightsSteerIt)
   EXPECT_LT(channelError(weights), 0.2 * channelError(nullptr));
 }
 
+// Audit (session 28): explainedFraction(r) counted components Compute had dropped: with 1 kept,
+// r = 5 read 100 % while the reconstruction from "5" used the 1 and was off. It now reports what
+// the reconstruction from r components leaves: 1 - explainedFraction(r) = its error's share.
+TEST(SequencePCA, ExplainedFractionCountsOnlyTheKeptComponents)
+{
+  RandomTransforms random(34);
+  const int frames = 12, channels = 2;
+  std::vector<LogCoords> logs;
+  for (int i = 0; i < frames * channels; ++i)
+  {
+    logs.push_back(randomCoords(random, 1.0));
+  }
+  const auto all = lct::sequencePCA(logs.data(), frames, channels);
+  ASSERT_TRUE(all.ok());
+  for (const int kept : { 1, 3 })
+  {
+    const auto pca = lct::sequencePCA(logs.data(), frames, channels, nullptr, kept);
+    ASSERT_TRUE(pca.ok());
+    ASSERT_EQ(pca.value.size(), kept);
+    for (const int r : { kept, kept + 1, 5, 100 })
+    {
+      EXPECT_EQ(pca.value.explainedFraction(r), all.value.explainedFraction(kept)) << r;
+      double error = 0.0;
+      for (int f = 0; f < frames; ++f)
+      {
+        for (int c = 0; c < channels; ++c)
+        {
+          const LogCoords off = lct::reconstructLog(pca.value, f, c, r).value -
+            logs[static_cast<std::size_t>(f * channels + c)];
+          error += lct::logInnerProduct(off, off);
+        }
+      }
+      const double total = all.value.singularValues.squaredNorm();
+      EXPECT_NEAR(error / total, 1.0 - pca.value.explainedFraction(r), 1e-12) << r;
+    }
+    EXPECT_LT(pca.value.explainedFraction(100), 1.0 - 1e-6);
+  }
+}
+
 // A joint spinning twice around z: Polar logs taken against the previous frame stay on a line
 // (one component explains everything); principal MatrixLog logs jump at 180 degrees: reported.
 TEST(SequencePCA, SpinBeyond180DegreesNeedsContinuousLogs)
