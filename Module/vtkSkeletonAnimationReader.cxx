@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -91,40 +92,153 @@ std::vector<Node> skeletonNodes(
   return nodes;
 }
 
-/// The MOTION section of a BVH file (its first word HIERARCHY): the count its `Frames:` line
-/// declares (as written) and the number of data rows after `Frame Time:`. False for another
-/// file, or a BVH file without those lines (assimp reports that itself).
-bool bvhMotionRows(const std::string& file, std::string& declared, long& rows)
+/// What the reader checks in the text of a BVH file that assimp does not.
+struct BVHText
+{
+  struct Joint
+  {
+    std::string name;
+    long line = 0;          ///< of its ROOT or JOINT keyword
+    int channels = 0;       ///< its CHANNELS count
+    bool positions = false; ///< an Xposition, Yposition or Zposition among them
+  };
+  std::vector<Joint> joints; ///< every ROOT and JOINT in file order: assimp's channel order
+  long channels = 0;         ///< values per frame (the sum of the CHANNELS counts)
+  std::string declared;      ///< the count the Frames: line declares, as written
+  long rows = 0;             ///< data rows (non-blank lines) after Frame Time:
+  long badLine = 0;          ///< the first data row without `channels` values (0: none)
+  long badValues = 0;        ///< and its number of values
+};
+
+/// Scans a BVH file (its first word HIERARCHY): the joints' channels, tokenised as assimp does
+/// (white space separates tokens, a token starting with a brace is that brace alone), and the
+/// MOTION section, line by line. False for another file, or a BVH file without those lines
+/// (assimp reports that itself).
+bool scanBVH(const std::string& file, BVHText& text)
 {
   std::ifstream in(file);
-  std::string word;
-  if (!(in >> word) || word != "HIERARCHY")
+  std::string line;
+  long number = 0;
+  enum class Next
+  {
+    Header,
+    Keyword,
+    Name,
+    Count,
+    Channel
+  };
+  Next next = Next::Header;
+  long keywordLine = 0;
+  int channelsLeft = 0;
+  bool motion = false;
+  while (!motion && std::getline(in, line))
+  {
+    ++number;
+    std::istringstream words(line);
+    std::string word;
+    while (!motion && words >> word)
+    {
+      std::vector<std::string> tokens;
+      while (word.size() > 1 && (word[0] == '{' || word[0] == '}'))
+      {
+        tokens.push_back(word.substr(0, 1));
+        word.erase(0, 1);
+      }
+      tokens.push_back(word);
+      for (const std::string& token : tokens)
+      {
+        if (next == Next::Header)
+        {
+          if (token != "HIERARCHY")
+          {
+            return false;
+          }
+          next = Next::Keyword;
+        }
+        else if (next == Next::Name)
+        {
+          text.joints.push_back({ token, keywordLine, 0, false });
+          next = Next::Keyword;
+        }
+        else if (next == Next::Count)
+        {
+          // assimp reads the count as a float and truncates it.
+          const double count = std::strtod(token.c_str(), nullptr);
+          channelsLeft = count >= 1.0 && count < 1e6 ? static_cast<int>(count) : 0;
+          if (!text.joints.empty())
+          {
+            text.joints.back().channels = channelsLeft;
+          }
+          text.channels += channelsLeft;
+          next = channelsLeft > 0 ? Next::Channel : Next::Keyword;
+        }
+        else if (next == Next::Channel)
+        {
+          if (!text.joints.empty() &&
+            (token == "Xposition" || token == "Yposition" || token == "Zposition"))
+          {
+            text.joints.back().positions = true;
+          }
+          next = --channelsLeft > 0 ? Next::Channel : Next::Keyword;
+        }
+        else if (token == "ROOT" || token == "JOINT")
+        {
+          next = Next::Name;
+          keywordLine = number;
+        }
+        else if (token == "CHANNELS")
+        {
+          next = Next::Count;
+        }
+        else if (token == "MOTION")
+        {
+          motion = true;
+          break;
+        }
+      }
+    }
+  }
+  if (!motion)
   {
     return false;
   }
-  std::string line;
-  while (std::getline(in, line) && line.find("MOTION") == std::string::npos)
-  {
-  }
   bool timeLine = false;
-  declared.clear();
+  text.declared.clear();
   while (!timeLine && std::getline(in, line))
   {
+    ++number;
     const std::size_t frames = line.find("Frames:");
     if (frames != std::string::npos)
     {
-      std::istringstream(line.substr(frames + 7)) >> declared;
+      std::istringstream(line.substr(frames + 7)) >> text.declared;
     }
     timeLine = line.find("Frame Time:") != std::string::npos;
   }
-  if (!timeLine || declared.empty())
+  if (!timeLine || text.declared.empty())
   {
     return false;
   }
-  rows = 0;
+  text.rows = 0;
   while (std::getline(in, line))
   {
-    rows += line.find_first_not_of(" \t\r") != std::string::npos ? 1 : 0;
+    ++number;
+    std::istringstream row(line);
+    std::string value;
+    long values = 0;
+    while (row >> value)
+    {
+      ++values;
+    }
+    if (values == 0)
+    {
+      continue;
+    }
+    ++text.rows;
+    if (values != text.channels && text.badLine == 0)
+    {
+      text.badLine = number;
+      text.badValues = values;
+    }
   }
   return true;
 }
@@ -215,10 +329,11 @@ bool vtkSkeletonAnimationReader::Load()
                   << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
     return false;
   }
-  // Frame times: the key times of the channel with the most keys, in seconds. assimp gives 0
-  // ticks per second for a format that has none (then 25, assimp's own default), but a BVH file
-  // states its Frame Time (assimp: 1 / Frame Time ticks per second): one that is not positive
-  // and finite (0, negative, NaN, beyond float) is an error, not 1/25 s.
+  // Frame times: the key times of the channel with the most keys, in seconds (extended below
+  // when other channels reach beyond them). assimp gives 0 ticks per second for a format that
+  // has none (then 25, assimp's own default), but a BVH file states its Frame Time (assimp:
+  // 1 / Frame Time ticks per second): one that is not positive and finite (0, negative, NaN,
+  // beyond float) is an error, not 1/25 s.
   std::string extension = std::filesystem::path(file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -247,28 +362,121 @@ bool vtkSkeletonAnimationReader::Load()
       return false;
     }
   }
-  // BVH: the Frames: line gives the frame count (the format's rule, which assimp follows for
-  // counts above 0). Rows after them are not read (some exporters write one more: Boxing_Toes)
-  // and said so; a count the frames read do not match (Frames: 0 and a row, which assimp reads
-  // as one frame) is an error rather than an animation the header denies.
-  std::string declared;
-  long rows = 0;
-  if (bvhMotionRows(file, declared, rows))
+  // BVH: what assimp 5.2 reads differently from the text. Its channels are the file's ROOT and
+  // JOINT blocks in file order; a joint with 6 channels gets the position channels *instead of*
+  // its OFFSET (BVH, and Testing/Unit/BVHOracle.h, add them: the OFFSET is added back below),
+  // and a joint with position channels among another number of channels loses them (refused:
+  // its motion cannot be recovered from what assimp read).
+  std::set<const aiNodeAnim*> addOffset;
+  BVHText bvh;
+  const bool isBVH = scanBVH(file, bvh);
+  if (isBVH)
   {
-    if (std::strtod(declared.c_str(), nullptr) != static_cast<double>(frames))
+    if (bvh.joints.size() != animation.mNumChannels)
     {
-      vtkErrorMacro(<< file << ": its Frames: line says " << declared
-                    << " but its MOTION section holds " << rows
-                    << (rows == 1 ? " data row" : " data rows")
+      vtkErrorMacro(<< file << ": its HIERARCHY holds " << bvh.joints.size()
+                    << " ROOT and JOINT blocks but assimp read " << animation.mNumChannels
+                    << " animated joints: the file is not read as it is written.");
+      in = Internals();
+      return false;
+    }
+    for (unsigned c = 0; c < animation.mNumChannels; ++c)
+    {
+      const BVHText::Joint& joint = bvh.joints[c];
+      if (joint.positions && joint.channels != 6)
+      {
+        vtkErrorMacro(<< file << ": joint " << joint.name << " (line " << joint.line << ") has "
+                      << joint.channels
+                      << " channels with position channels among them: assimp reads position "
+                         "channels only on joints with 6 channels and drops these; give the "
+                         "joint 6 channels (3 positions, 3 rotations).");
+        in = Internals();
+        return false;
+      }
+      if (joint.channels == 6 && animation.mChannels[c])
+      {
+        addOffset.insert(animation.mChannels[c]);
+      }
+    }
+    // assimp reads values, not lines: a row with one value too many or too few shifts every
+    // later frame without a word. BVH has one frame per line.
+    if (bvh.badLine > 0)
+    {
+      vtkErrorMacro(<< file << ": line " << bvh.badLine << " of its MOTION section holds "
+                    << bvh.badValues << (bvh.badValues == 1 ? " value" : " values")
+                    << " but the HIERARCHY's CHANNELS give " << bvh.channels
+                    << " per frame (one frame per line): the frames after it would be shifted.");
+      in = Internals();
+      return false;
+    }
+    // The Frames: line gives the frame count (the format's rule, which assimp follows for counts
+    // above 0). Rows after them are not read (some exporters write one more: Boxing_Toes) and
+    // said so; a count the frames read do not match (Frames: 0 and a row, which assimp reads as
+    // one frame) is an error rather than an animation the header denies.
+    if (std::strtod(bvh.declared.c_str(), nullptr) != static_cast<double>(frames))
+    {
+      vtkErrorMacro(<< file << ": its Frames: line says " << bvh.declared
+                    << " but its MOTION section holds " << bvh.rows
+                    << (bvh.rows == 1 ? " data row" : " data rows")
                     << ": the header is wrong; fix the Frames: line");
       in = Internals();
       return false;
     }
-    if (rows > static_cast<long>(frames))
+    if (bvh.rows > static_cast<long>(frames))
     {
-      vtkWarningMacro(<< file << ": " << rows - static_cast<long>(frames)
+      vtkWarningMacro(<< file << ": " << bvh.rows - static_cast<long>(frames)
                       << " data row(s) after the " << frames
                       << " its Frames: line declares are not read.");
+    }
+  }
+  else if (frames > 1 && !statesFrameTime)
+  {
+    // Other formats: channels keyed at different times. The frames cover the whole animation,
+    // every channel's keys and the animation's duration (a channel with few keys can span more
+    // than the one with the most: it was cut at the latter's last key), at that channel's rate
+    // or finer, evenly spaced.
+    double first = ticks.front(), last = ticks.back();
+    const auto span = [&first, &last](const auto* keys, unsigned count) {
+      if (keys && count > 0)
+      {
+        first = std::min(first, keys[0].mTime);
+        last = std::max(last, keys[count - 1].mTime);
+      }
+    };
+    for (const auto& named : channels)
+    {
+      const aiNodeAnim* channel = named.second;
+      span(channel->mPositionKeys, channel->mNumPositionKeys);
+      span(channel->mRotationKeys, channel->mNumRotationKeys);
+      span(channel->mScalingKeys, channel->mNumScalingKeys);
+    }
+    if (std::isfinite(animation.mDuration))
+    {
+      last = std::max(last, animation.mDuration);
+    }
+    const double step = (ticks.back() - ticks.front()) / (frames - 1);
+    if (first < ticks.front() - 1e-6 * step || last > ticks.back() + 1e-6 * step)
+    {
+      if (!std::isfinite(first) || !std::isfinite(last))
+      {
+        vtkErrorMacro(<< file << ": the key times are not finite.");
+        in = Internals();
+        return false;
+      }
+      const double count = std::ceil((last - first) / step - 1e-6) + 1.0;
+      if (!(count * static_cast<double>(nodes.size()) <= static_cast<double>(kMaxTransforms)))
+      {
+        vtkErrorMacro(<< file << ": " << count << " frames of " << nodes.size()
+                      << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
+        in = Internals();
+        return false;
+      }
+      frames = static_cast<unsigned>(count);
+      ticks.resize(frames);
+      for (unsigned f = 0; f < frames; ++f)
+      {
+        ticks[f] = f + 1 == frames ? last : first + (last - first) * f / (frames - 1);
+      }
     }
   }
   lct::SkeletalAnimation& a = in.Animation;
@@ -293,10 +501,15 @@ bool vtkSkeletonAnimationReader::Load()
     const Eigen::Matrix4d rest = lct_assimp::toEigen(nodes[j].node->mTransformation);
     const auto found = channels.find(nodes[j].node->mName.C_Str());
     const aiNodeAnim* channel = found == channels.end() ? nullptr : found->second;
+    // A BVH joint with 6 channels: its OFFSET (assimp's node transform) plus the channels.
+    const Eigen::Vector3d offset = addOffset.count(channel) > 0
+      ? Eigen::Vector3d(rest.topRightCorner<3, 1>())
+      : Eigen::Vector3d::Zero();
     for (unsigned f = 0; f < frames; ++f)
     {
       Eigen::Matrix4d& local = a.locals[static_cast<std::size_t>(f) * nodes.size() + j];
       local = lct_assimp::sampleLocal(channel, rest, ticks[f]);
+      local.topRightCorner<3, 1>() += offset;
       if (!local.allFinite())
       {
         vtkErrorMacro(<< file << ": joint " << a.joints[j].name
@@ -351,7 +564,8 @@ int vtkSkeletonAnimationReader::RequestData(
   if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
     const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    if (std::isfinite(t))
+    // +-Inf are times beyond the range like any other (the last or first frame); NaN is none.
+    if (!std::isnan(t))
     {
       const auto after = std::lower_bound(in.Times.begin(), in.Times.end(), t);
       frame = static_cast<int>(after - in.Times.begin());

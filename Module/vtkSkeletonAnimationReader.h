@@ -10,16 +10,23 @@
  * S(scale) from its channel's keys, sampled at the frame times (linear for position and scale,
  * slerp for rotation, between keys; a single key is constant), or the node's own transform for
  * joints without a channel (end sites, fixed helper nodes). Frames are the key times of the
- * channel with the most keys, assumed evenly spaced; for BVH they are the file's data rows, at
- * its Frame Time: as many as its Frames: line declares (rows after them are not read, with a
- * warning; a count the rows read do not match, such as Frames: 0 before a row, is an error).
+ * channel with the most keys, assumed evenly spaced; where other channels' keys or the
+ * animation's duration reach beyond them, the frames cover that whole span, evenly spaced at that
+ * channel's rate or finer. For BVH they are the file's data rows, at its Frame Time: as many as
+ * its Frames: line declares (rows after them are not read, with a warning; a count the rows read
+ * do not match, such as Frames: 0 before a row, is an error). A BVH joint's translation is its
+ * OFFSET plus its position channels (the BVH convention; assimp 5.2 replaces the OFFSET, which
+ * the reader adds back). What assimp would read other than the text says is an error naming the
+ * line or joint: a data row without one value per channel (assimp reads values regardless of
+ * lines and would shift every later frame), and position channels on a joint whose channel
+ * count is not 6 (assimp drops them).
  *
  * Output (vtkPolyDataAlgorithm, one frame per request): the joints' world positions as points
  * (end sites included), bones as lines (parent to child), point data "JointName"
  * (vtkStringArray), "JointId", "Parent" and "Depth" (vtkIntArray), field data "Frame". The
  * frame times are advertised as TIME_STEPS (and TIME_RANGE), so VTK's animation machinery and
  * ParaView-style scripts step through them; a requested time between frames gives the nearest
- * frame, outside the range the first or last.
+ * frame, outside the range (+-Inf included) the first or last.
  *
  * For analysis and for the interpolators, after UpdateInformation() (or Update()):
  * GetNumberOfJoints, GetJointName, GetJointParent, IsEndSite, GetNumberOfFrames, GetFrameTime,

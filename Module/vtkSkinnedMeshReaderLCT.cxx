@@ -3,6 +3,7 @@
 #include "AssimpSampling.h"
 
 #include "lct/Affine.h"
+#include "lct/Conditioning.h"
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
@@ -22,10 +23,14 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,6 +56,29 @@ bool affineOf(const aiMatrix4x4& a, Eigen::Matrix4d& m)
   }
   m.row(3) = Eigen::RowVector4d(0, 0, 0, 1);
   return true;
+}
+
+/// Whether the linear part of an affine map can be inverted to working accuracy: its singular
+/// values (at unit scale, so that only their ratio counts) within lct::kMaxConditionNumber of each
+/// other, the limit the module puts on every linear part it inverts. A zero scale fails, and so
+/// does a flattening too thin for double precision to undo; a reflection passes. `condition` is
+/// sigma_max / sigma_min (Inf for a singular map).
+bool invertible(const Eigen::Matrix4d& m, double& condition)
+{
+  const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d unit = lct::scaledByPowerOfTwo(linear, -lct::unitScaleExponent(linear));
+  const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(unit).singularValues();
+  condition = sigma[2] > 0.0 ? sigma[0] / sigma[2] : std::numeric_limits<double>::infinity();
+  return sigma[2] > 0.0 && sigma[0] <= lct::kMaxConditionNumber * sigma[2];
+}
+
+/// Why an affine map cannot be inverted (invertible() false), for an error message.
+std::string notInvertible(double condition)
+{
+  std::ostringstream why;
+  why << "is singular or too ill-conditioned to invert (condition number " << condition
+      << ", the limit " << lct::kMaxConditionNumber << ")";
+  return why.str();
 }
 
 /// Writes an affine map (the bottom row stored as exactly (0, 0, 0, 1): products of float-born
@@ -193,7 +221,8 @@ bool vtkSkinnedMeshReaderLCT::Load()
   }
   const std::string file = this->FileName;
   in.Importer.reset(new Assimp::Importer);
-  const aiScene* scene = in.Importer->ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
+  const aiScene* scene =
+    in.Importer->ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
   const auto fail = [&](const std::string& why) {
     vtkErrorMacro(<< file << ": " << why);
     in = Internals();
@@ -221,6 +250,14 @@ bool vtkSkinnedMeshReaderLCT::Load()
     {
       return fail("node '" + std::string(node->mName.C_Str()) +
         "' has a transform that is not affine or not finite.");
+    }
+    // A zero scale flattens everything below the node: its normals need the inverse (NaN
+    // otherwise), and a bone node's matrix would be singular.
+    double condition = 0.0;
+    if (!invertible(local, condition))
+    {
+      return fail("node '" + std::string(node->mName.C_Str()) + "' has a transform that " +
+        notInvertible(condition) + ".");
     }
     in.Nodes.emplace_back(node, parent);
     nodeByName.emplace(node->mName.C_Str(), index);
@@ -358,12 +395,29 @@ bool vtkSkinnedMeshReaderLCT::Load()
       }
       // The bone at bind time: the mesh's placement times the inverse of the offset matrix (which
       // maps mesh space to bone space in the bind pose).
-      const Eigen::Matrix4d offsetMatrix = lct_assimp::toEigen(bone->mOffsetMatrix);
-      const Eigen::Matrix4d rest = place * offsetMatrix.inverse();
+      // The same checks as for node transforms: a projective offset matrix lost its bottom row
+      // when written out as the bone's (affine) rest matrix.
+      Eigen::Matrix4d offsetMatrix;
+      if (!affineOf(bone->mOffsetMatrix, offsetMatrix))
+      {
+        const aiMatrix4x4& o = bone->mOffsetMatrix;
+        std::ostringstream why;
+        why << "the offset (inverse bind) matrix of bone '" << bone->mName.C_Str()
+            << "' is not affine (bottom row " << o.d1 << " " << o.d2 << " " << o.d3 << " " << o.d4
+            << ", not 0 0 0 1) or not finite.";
+        return fail(why.str());
+      }
+      double condition = 0.0;
+      if (!invertible(offsetMatrix, condition))
+      {
+        return fail("the offset (inverse bind) matrix of bone '" +
+          std::string(bone->mName.C_Str()) + "' " + notInvertible(condition) + ".");
+      }
+      const Eigen::Matrix4d rest = place * lct::inverseAffine(offsetMatrix);
       if (!rest.allFinite())
       {
-        return fail(
-          "the offset matrix of bone '" + std::string(bone->mName.C_Str()) + "' is singular.");
+        return fail("the rest matrix of bone '" + std::string(bone->mName.C_Str()) +
+          "' (its mesh's placement times the inverse of its offset matrix) is not finite.");
       }
       const int index =
         addBone(bone->mName.C_Str(), node == nodeByName.end() ? -1 : node->second, rest);

@@ -19,8 +19,10 @@
  * [GetStartTime(), GetEndTime()] animates the character with any blend mode.
  *
  * Errors (a missing, unreadable or mesh-less file, one whose structure assimp's validation
- * refuses, a NaN vertex or weight, more than 10^7 vertices, 65536 bones or 32 influences per
- * vertex) are reported with a vtkErrorMacro naming the file; the request fails and the output is
+ * refuses, a node transform or bone offset matrix that is not affine or not finite, or whose
+ * 3x3 part is singular or beyond condition number 1e13 (a zero scale), a NaN vertex or weight,
+ * more than 10^7 vertices, 65536 bones or 32 influences per vertex) are reported with a
+ * vtkErrorMacro naming the file (and the node or bone); the request fails and the output is
  * empty. A bone naming no node of the file is a warning: its vertices stay in the bind pose.
  * Queries return 0 (null for names) before a successful update or for indices out of range.
  *

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <vector>
 
 namespace lct
@@ -52,6 +53,42 @@ std::string bvhName(const std::string& name, int index)
     }
   }
   return token;
+}
+
+/// The names written for the joints: bvhName, made unique (readers match channels to joints by
+/// name, and "a b" and "a_b" both give "a_b"). A name that is already a valid token keeps it (the
+/// first of equal ones); the others take the first free of token, token_2, token_3, ...
+std::vector<std::string> uniqueBVHNames(const SkeletalAnimation& animation)
+{
+  const std::size_t n = animation.joints.size();
+  std::vector<std::string> names(n);
+  std::set<std::string> used;
+  std::vector<bool> named(n, false);
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const std::string& name = animation.joints[j].name;
+    if (!animation.joints[j].endSite && bvhName(name, static_cast<int>(j)) == name &&
+      used.insert(name).second)
+    {
+      names[j] = name;
+      named[j] = true;
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    if (named[j] || animation.joints[j].endSite)
+    {
+      continue;
+    }
+    const std::string token = bvhName(animation.joints[j].name, static_cast<int>(j));
+    std::string name = token;
+    for (int k = 2; !used.insert(name).second; ++k)
+    {
+      name = token + "_" + std::to_string(k);
+    }
+    names[j] = name;
+  }
+  return names;
 }
 
 bool fail(std::string* why, const std::string& reason)
@@ -187,6 +224,7 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       children[static_cast<std::size_t>(p)].push_back(j);
     }
   }
+  const std::vector<std::string> names = uniqueBVHNames(animation);
   const char axisName[3] = { 'X', 'Y', 'Z' };
   out << "HIERARCHY\n";
   // Iterative, so that deep hierarchies cannot overflow the stack: (joint, open/close).
@@ -215,14 +253,15 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
       continue;
     }
     // A joint with position channels sits at OFFSET 0: readers that add the channels to the
-    // OFFSET (the BVH text's reading) and readers that take them instead of it (assimp, so the
-    // module's own reader) then agree.
+    // OFFSET (the BVH text's reading, and the module's reader) and readers that take them
+    // instead of it (assimp 5.2 itself) then agree.
     const Eigen::Vector3d o = moves[static_cast<std::size_t>(j)]
       ? Eigen::Vector3d::Zero()
       : offsets[static_cast<std::size_t>(j)];
     out << indent
-        << (joint.endSite ? std::string("End Site")
-                          : (joint.parent < 0 ? "ROOT " : "JOINT ") + bvhName(joint.name, j))
+        << (joint.endSite
+               ? std::string("End Site")
+               : (joint.parent < 0 ? "ROOT " : "JOINT ") + names[static_cast<std::size_t>(j)])
         << "\n"
         << indent << "{\n"
         << indent << "\tOFFSET " << number(o[0]) << " " << number(o[1]) << " " << number(o[2])

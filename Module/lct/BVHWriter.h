@@ -7,10 +7,12 @@
  * OFFSET: its translation at frame 0. Roots, and joints whose translation changes over the
  * frames, get position channels (Xposition Yposition Zposition, the whole translation) at
  * OFFSET 0, where readers that add the channels to the OFFSET and readers that take them
- * instead of it (assimp: the module's reader) agree. A name is written as one token: white
- * space, control characters and braces become '_' (readers split names there), an empty name
- * joint_<index>. Every joint that is not an end site gets three rotation
- * channels in `rotationOrder` (e.g. "ZYX": R = Rz(a) Ry(b) Rx(c), the BVH convention of
+ * instead of it (assimp 5.2 itself) agree. A name is written as one token: white space, control
+ * characters and braces become '_' (readers split names there), an empty name joint_<index>;
+ * names are then made unique (readers match channels to joints by name): a name already valid
+ * keeps it (the first of equal ones), a changed or repeated one takes the first of token,
+ * token_2, token_3, ... that no other joint uses. Every joint that is not an end site gets three
+ * rotation channels in `rotationOrder` (e.g. "ZYX": R = Rz(a) Ry(b) Rx(c), the BVH convention of
  * multiplying in channel order), end sites an End Site block. The Euler angles of each frame
  * are the solution nearest to the previous frame's (of the two Tait-Bryan solutions, unwrapped
  * by whole turns), so the channels are continuous wherever the motion is. Numbers are written

@@ -3,6 +3,7 @@
 // BVHOracle.h, an independent parser kept as the oracle of this test only), TIME_STEPS through the
 // pipeline, and unreadable files.
 #include "BVHOracle.h"
+#include "Base64.h"
 #include "VtkTestHelpers.h"
 
 #include "lct/BVHWriter.h"
@@ -25,11 +26,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -58,6 +64,23 @@ std::string temporaryFile(const std::string& name, const std::string& contents)
     (std::filesystem::temp_directory_path() / ("lct-reader-" + name)).string();
   std::ofstream(path, std::ios::binary) << contents;
   return path;
+}
+
+/// The bytes of float32 values (glTF buffers are little endian, as the test machines).
+std::string floatBytes(std::initializer_list<float> values)
+{
+  std::string bytes(values.size() * sizeof(float), '\0');
+  std::memcpy(&bytes[0], values.begin(), bytes.size());
+  return bytes;
+}
+
+
+/// The world position of `joint` at `frame` as the reader gives it.
+Eigen::Vector3d worldPosition(vtkSkeletonAnimationReader* reader, int joint, int frame)
+{
+  vtkNew<vtkMatrix4x4> world;
+  reader->GetWorldTransform(joint, frame, world);
+  return Eigen::Vector3d(world->GetElement(0, 3), world->GetElement(1, 3), world->GetElement(2, 3));
 }
 } // namespace
 
@@ -409,4 +432,244 @@ TEST(SkeletonReader, WritingRefusesWhatBVHCannotHold)
     EXPECT_FALSE(std::filesystem::exists("/tmp/lct-bad-order.bvh"));
     EXPECT_FALSE(std::filesystem::exists("/tmp/lct-bad-order.bvh.part"));
   }
+}
+
+TEST(SkeletonReader, PositionChannelsAreAddedToTheOffset)
+{
+  // Audit: assimp takes a 6-channel joint's position channels instead of its OFFSET (the root's
+  // too), where BVH adds them, and drops the position channels of joints with another channel
+  // count. Now: OFFSET + channels, as BVHOracle.h; channels assimp drops are an error naming the
+  // joint.
+  const std::string text = "HIERARCHY\nROOT Hips\n{\n  OFFSET 5 0 0\n  CHANNELS 6 Xposition "
+                           "Yposition Zposition Zrotation Yrotation Xrotation\n  JOINT Chest\n  "
+                           "{\n    OFFSET 0 10 0\n    CHANNELS 6 Xposition Yposition Zposition "
+                           "Yrotation Xrotation Zrotation\n    End Site\n    {\n      OFFSET 0 5 "
+                           "1\n    }\n  }\n}\nMOTION\nFrames: 2\nFrame Time: 0.1\n"
+                           "1 2 3 10 20 30 1 0 0 40 50 60\n0 0 0 -30 80 10 0 2 0 170 179 -179\n";
+  const std::string path = temporaryFile("position-offset.bvh", text);
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  const lct::SkeletalAnimation* read = w.reader->GetAnimation();
+  ASSERT_NE(read, nullptr) << w.errors->Last;
+  const auto oracle = lct_bench::LoadBVH(path);
+  ASSERT_TRUE(oracle.Ok()) << oracle.error;
+  ASSERT_EQ(read->jointCount(), static_cast<int>(oracle.motion.joints.size()));
+  ASSERT_EQ(read->frames, 2);
+  for (int f = 0; f < read->frames; ++f)
+  {
+    for (int j = 0; j < read->jointCount(); ++j)
+    {
+      const lct_bench::Matrix4 l =
+        lct_bench::LocalTransform(oracle.motion, j, oracle.motion.Frame(f));
+      const Eigen::Matrix4d expected =
+        Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(l.data());
+      EXPECT_LT((read->local(f, j) - expected).norm(), 1e-5) << "frame " << f << " joint " << j;
+    }
+  }
+  // Frame 0: the Chest at Hips (5 + 1, 2, 3) plus the rotated (1, 10, 0), not (1, 0, 0).
+  EXPECT_NEAR(read->local(0, 0)(0, 3), 6.0, 1e-6);
+  EXPECT_NEAR(read->local(0, 1)(1, 3), 10.0, 1e-6);
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  std::filesystem::remove(path);
+
+  // Position channels on a joint with 3 or 4 channels: assimp drops them.
+  for (const std::string channels :
+    { "3 Xposition Yposition Zposition", "4 Xposition Zrotation Xrotation Yrotation" })
+  {
+    const int count = channels[0] - '0';
+    std::string row = "0 0 0 0 0 0";
+    for (int c = 0; c < count; ++c)
+    {
+      row += " 1";
+    }
+    const std::string dropped = temporaryFile("dropped-positions.bvh",
+      "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
+      "Zrotation Yrotation Xrotation\n  JOINT Arm\n  {\n    OFFSET 0 10 0\n    CHANNELS " +
+        channels +
+        "\n    End Site\n    {\n      OFFSET 0 5 0\n    }\n  }\n}\nMOTION\nFrames: "
+        "2\nFrame Time: 0.1\n" +
+        row + "\n" + row + "\n");
+    Watched d;
+    d.reader->SetFileName(dropped.c_str());
+    d.reader->UpdateInformation();
+    EXPECT_EQ(d.reader->GetAnimation(), nullptr) << channels;
+    EXPECT_EQ(d.errors->Count, 1) << channels;
+    EXPECT_NE(d.errors->Last.find("joint Arm (line 6)"), std::string::npos) << d.errors->Last;
+    EXPECT_NE(d.errors->Last.find("position channels"), std::string::npos) << d.errors->Last;
+    std::filesystem::remove(dropped);
+  }
+}
+
+TEST(SkeletonReader, ADataRowWithoutOneValuePerChannelIsAnError)
+{
+  // Audit: assimp reads values, not lines, so a row with one value too many shifted every later
+  // frame without a word (and a frame split over two lines read as two rows, with a misleading
+  // warning). Now a row whose value count is not the HIERARCHY's channel count is an error
+  // naming its line.
+  const std::string header = "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition "
+                             "Yposition Zposition Zrotation Yrotation Xrotation\n  JOINT Chest\n  "
+                             "{\n    OFFSET 0 5 0\n    CHANNELS 3 Zrotation Yrotation Xrotation\n "
+                             "   End Site\n    {\n      OFFSET 0 5 0\n    }\n  }\n}\nMOTION\n";
+  const int firstRow = static_cast<int>(std::count(header.begin(), header.end(), '\n')) + 3;
+  struct Case
+  {
+    const char* name;
+    std::string motion;
+    int line;
+    const char* values;
+  };
+  const Case cases[] = {
+    { "extra value",
+      "Frames: 3\nFrame Time: 0.1\n1 2 3 10 20 30 5 6 7 8\n1 2 3 10 20 30 5 6\n"
+      "1 2 3 10 20 30 5 6 7\n",
+      firstRow, "holds 10 values" },
+    { "split frame",
+      "Frames: 2\nFrame Time: 0.1\n1 2 3 10 20\n30 5 6 7\n1 2 3 10 20 30 5 6 7\n"
+      "1 2 3 10 20 30 5 6 7\n",
+      firstRow, "holds 5 values" },
+    { "after a blank line",
+      "Frames: 3\nFrame Time: 0.1\n1 2 3 10 20 30 5 6 7\n\n"
+      "1 2 3 10 20 30 5 6 7 8\n1 2 3 10 20 30 5 6\n",
+      firstRow + 2, "holds 10 values" },
+  };
+  for (const Case& c : cases)
+  {
+    const std::string path = temporaryFile("row-values.bvh", header + c.motion);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr) << c.name;
+    EXPECT_EQ(w.errors->Count, 1) << c.name;
+    EXPECT_NE(w.errors->Last.find("line " + std::to_string(c.line) + " "), std::string::npos)
+      << c.name << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(c.values), std::string::npos) << c.name << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find("give 9 per frame"), std::string::npos) << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(SkeletonReader, FramesCoverEveryChannelsKeys)
+{
+  // Audit: the frames were the key times of the channel with the most keys, so a glTF node keyed
+  // twice over 0-4 s was cut at the 1 s of another keyed 5 times over 0-1 s. Now the frames span
+  // every channel (and the animation's duration) at the busiest channel's rate: B reaches y = 40.
+  const std::string data = floatBytes({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f }) +
+    floatBytes({ 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0 }) + floatBytes({ 0.0f, 4.0f }) +
+    floatBytes({ 0, 0, 0, 0, 40, 0 });
+  const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"name":"root","children":[1,2]},{"name":"A","translation":[1,0,0]},
+ {"name":"B","translation":[0,1,0]}],
+"animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"translation"}},
+ {"sampler":1,"target":{"node":2,"path":"translation"}}],
+ "samplers":[{"input":0,"output":1,"interpolation":"LINEAR"},
+ {"input":2,"output":3,"interpolation":"LINEAR"}]}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":5,"type":"SCALAR","min":[0],"max":[1]},
+ {"bufferView":1,"componentType":5126,"count":5,"type":"VEC3"},
+ {"bufferView":2,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[4]},
+ {"bufferView":3,"componentType":5126,"count":2,"type":"VEC3"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":20},
+ {"buffer":0,"byteOffset":20,"byteLength":60},{"buffer":0,"byteOffset":80,"byteLength":8},
+ {"buffer":0,"byteOffset":88,"byteLength":24}],
+"buffers":[{"byteLength":112,"uri":"data:application/octet-stream;base64,)" +
+    lct_test::base64(data) + "\"}]}\n";
+  const std::string path = temporaryFile("span.gltf", gltf);
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  ASSERT_NE(w.reader->GetAnimation(), nullptr) << w.errors->Last;
+  ASSERT_EQ(w.reader->GetNumberOfJoints(), 2);
+  const int a = std::string(w.reader->GetJointName(0)) == "A" ? 0 : 1;
+  const int b = 1 - a;
+  ASSERT_STREQ(w.reader->GetJointName(b), "B");
+  EXPECT_EQ(w.reader->GetNumberOfFrames(), 17); // 0 to 4 s every 0.25 s
+  EXPECT_NEAR(w.reader->GetFrameTime(), 0.25, 1e-9);
+  vtkInformation* info = w.reader->GetOutputInformation(0);
+  const double* range = info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  ASSERT_NE(range, nullptr);
+  EXPECT_NEAR(range[0], 0.0, 1e-9);
+  EXPECT_NEAR(range[1], 4.0, 1e-9);
+  const int last = w.reader->GetNumberOfFrames() - 1;
+  EXPECT_LT((worldPosition(w.reader, b, last) - Eigen::Vector3d(0, 40, 0)).norm(), 1e-5);
+  EXPECT_LT((worldPosition(w.reader, b, 8) - Eigen::Vector3d(0, 20, 0)).norm(), 1e-5);   // 2 s
+  EXPECT_LT((worldPosition(w.reader, a, 2) - Eigen::Vector3d(2, 0, 0)).norm(), 1e-5);    // 0.5 s
+  EXPECT_LT((worldPosition(w.reader, a, last) - Eigen::Vector3d(4, 0, 0)).norm(), 1e-5); // held
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  std::filesystem::remove(path);
+}
+
+TEST(SkeletonReader, InfiniteTimesGiveTheFirstOrLastFrame)
+{
+  // Audit: a non-finite UPDATE_TIME_STEP was ignored, so +Inf gave frame 0; the header says a
+  // time past the range gives the last frame. Now +Inf gives the last, -Inf the first.
+  const std::string path = temporaryFile("infinite-time.bvh",
+    "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
+    "Zrotation Yrotation Xrotation\n  End Site\n  {\n    OFFSET 0 1 0\n  }\n}\nMOTION\nFrames: "
+    "3\nFrame Time: 0.1\n0 0 0 0 0 0\n1 0 0 0 0 0\n2 0 0 0 0 0\n");
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  const auto frameAt = [&w](double t) {
+    w.reader->UpdateTimeStep(t);
+    auto* frame =
+      vtkIntArray::SafeDownCast(w.reader->GetOutput()->GetFieldData()->GetArray("Frame"));
+    return frame ? frame->GetValue(0) : -1;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(frameAt(inf), 2);
+  EXPECT_EQ(frameAt(-inf), 0);
+  EXPECT_EQ(frameAt(0.1), 1);
+  EXPECT_EQ(frameAt(inf), 2);
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  std::filesystem::remove(path);
+}
+
+TEST(SkeletonReader, WrittenNamesStayDistinct)
+{
+  // Audit: the writer turned "a b" into "a_b" without looking at the other names, so with a
+  // joint "a_b" the file held two joints of one name and did not read back. Now a valid name
+  // keeps it and a changed one takes the first free of a_b, a_b_2, a_b_3, ...
+  lct::SkeletalAnimation a;
+  a.joints = { { "root", -1, false }, { "a b", 0, false }, { "tip1", 1, true }, { "a_b", 0, false },
+    { "tip2", 3, true }, { "a_b_2", 0, false }, { "tip3", 5, true } };
+  a.frames = 2;
+  a.frameTime = 0.1;
+  for (int f = 0; f < a.frames; ++f)
+  {
+    for (int j = 0; j < a.jointCount(); ++j)
+    {
+      Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+      if (!a.joints[j].endSite)
+      {
+        m.topLeftCorner<3, 3>() =
+          Eigen::AngleAxisd(0.2 * (f + 1) * j, Eigen::Vector3d::UnitZ()).matrix();
+      }
+      m.topRightCorner<3, 1>() = Eigen::Vector3d(j, 1.0, 0.5 * j);
+      a.locals.push_back(m);
+    }
+  }
+  std::ostringstream text;
+  std::string why;
+  ASSERT_TRUE(lct::writeBVH(a, "ZYX", text, &why)) << why;
+  const std::string path = temporaryFile("unique-names.bvh", text.str());
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  const lct::SkeletalAnimation* read = w.reader->GetAnimation();
+  ASSERT_NE(read, nullptr) << w.errors->Last << "\n" << text.str();
+  ASSERT_EQ(read->jointCount(), a.jointCount());
+  EXPECT_EQ(read->joints[1].name, "a_b_3");
+  EXPECT_EQ(read->joints[3].name, "a_b");
+  EXPECT_EQ(read->joints[5].name, "a_b_2");
+  for (int f = 0; f < a.frames; ++f)
+  {
+    for (int j = 0; j < a.jointCount(); ++j)
+    {
+      // Float32 values in assimp: ~1e-7 per entry.
+      EXPECT_LT((read->local(f, j) - a.local(f, j)).norm(), 1e-5)
+        << "frame " << f << " joint " << j;
+    }
+  }
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  std::filesystem::remove(path);
 }

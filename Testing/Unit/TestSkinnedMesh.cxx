@@ -1,5 +1,6 @@
 // vtkSkinnedMeshReaderLCT on the skinned characters of assimp-testmodels, driving
 // vtkProbeDeformerLCT in every blend mode (issue #11 §2). Skipped without the data.
+#include "Base64.h"
 #include "VtkTestHelpers.h"
 
 #include "vtkDataArray.h"
@@ -16,9 +17,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -35,6 +40,51 @@ double diagonal(vtkPolyData* pd)
   pd->GetBounds(b);
   return std::sqrt(std::pow(b[1] - b[0], 2) + std::pow(b[3] - b[2], 2) + std::pow(b[5] - b[4], 2));
 }
+
+template <typename T>
+void appendBytes(std::string& bytes, const std::vector<T>& values)
+{
+  const std::size_t at = bytes.size();
+  bytes.resize(at + values.size() * sizeof(T));
+  std::memcpy(&bytes[at], values.data(), values.size() * sizeof(T));
+}
+
+
+/// A glTF file of one triangle (with normals) skinned to one bone of weight 1: node "mesh" holds
+/// the mesh, node "bone" is the joint. `meshNode` and `boneNode` are JSON members added to those
+/// nodes (e.g. `,"scale":[0,1,1]`), `inverseBind` the bone's inverse bind matrix as glTF stores
+/// it (column-major, little-endian float32). Returns the file's path.
+std::string triangleCharacter(const std::string& name, const std::string& meshNode,
+  const std::string& boneNode, const std::array<float, 16>& inverseBind)
+{
+  std::string data;
+  appendBytes(data, std::vector<float>{ 0, 0, 0, 1, 0, 0, 0, 1, 0 });            // 0: positions
+  appendBytes(data, std::vector<float>{ 0, 0, 1, 0, 0, 1, 0, 0, 1 });            // 36: normals
+  appendBytes(data, std::vector<std::uint16_t>(12, 0));                          // 72: joints
+  appendBytes(data, std::vector<float>{ 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0 });   // 96: weights
+  appendBytes(data, std::vector<float>(inverseBind.begin(), inverseBind.end())); // 144: matrix
+  const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+"nodes":[{"name":"mesh","mesh":0,"skin":0)" +
+    meshNode + R"(},{"name":"bone")" + boneNode + R"(}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1,"JOINTS_0":2,"WEIGHTS_0":3}}]}],
+"skins":[{"joints":[1],"inverseBindMatrices":4}],
+"accessors":[
+ {"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+ {"bufferView":1,"componentType":5126,"count":3,"type":"VEC3"},
+ {"bufferView":2,"componentType":5123,"count":3,"type":"VEC4"},
+ {"bufferView":3,"componentType":5126,"count":3,"type":"VEC4"},
+ {"bufferView":4,"componentType":5126,"count":1,"type":"MAT4"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},
+ {"buffer":0,"byteOffset":36,"byteLength":36},{"buffer":0,"byteOffset":72,"byteLength":24},
+ {"buffer":0,"byteOffset":96,"byteLength":48},{"buffer":0,"byteOffset":144,"byteLength":64}],
+"buffers":[{"byteLength":208,"uri":"data:application/octet-stream;base64,)" +
+    lct_test::base64(data) + "\"}]}\n";
+  const std::string path = std::string(LCT_BINARY_DIR) + "/Testing/Temporary/" + name + ".gltf";
+  std::ofstream(path, std::ios::binary) << gltf;
+  return path;
+}
+
+constexpr std::array<float, 16> kIdentity = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 } // namespace
 
 class SkinnedCharacters : public ::testing::TestWithParam<const char*>
@@ -199,4 +249,71 @@ TEST(SkinnedMeshReader, FileExtensionsAreAssimpsInLowerCase)
     EXPECT_FALSE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(ext)) << ext;
   }
   EXPECT_FALSE(vtkSkinnedMeshReaderLCT::IsExtensionSupported(nullptr));
+}
+
+TEST(SkinnedMeshReader, SingularOrProjectiveTransformsAreErrors)
+{
+  // Audit: a mesh node scaled by 0 was read with NaN normals, a bone node scaled by 0 gave a
+  // singular bone matrix, and a projective inverse bind matrix lost its bottom row, all with
+  // success. Each is now an error naming the node or bone; regular files (a uniform scale of
+  // 1e-6, a mirror) still read.
+  std::array<float, 16> projective = kIdentity;
+  projective[15] = 2.0f; // bottom row (0, 0, 0, 2)
+  struct Case
+  {
+    const char* name;
+    std::string meshNode, boneNode;
+    std::array<float, 16> inverseBind;
+    const char* who;
+    const char* why;
+  };
+  const char* singular = "singular or too ill-conditioned to invert";
+  const Case bad[] = {
+    { "zero-scale-mesh", R"(,"scale":[0,1,1])", "", kIdentity, "node 'mesh'", singular },
+    { "zero-scale-bone", "", R"(,"scale":[0,1,1])", kIdentity, "node 'bone'", singular },
+    { "thin-bone", "", R"(,"scale":[1e-14,1,1])", kIdentity, "node 'bone'", singular },
+    { "projective-bind", "", "", projective, "bone 'bone'", "not affine" },
+  };
+  for (const Case& c : bad)
+  {
+    vtkNew<vtkSkinnedMeshReaderLCT> reader;
+    vtkNew<lct_test::ErrorCounter> errors, executive;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+    const std::string path = triangleCharacter(c.name, c.meshNode, c.boneNode, c.inverseBind);
+    reader->SetFileName(path.c_str());
+    EXPECT_EQ(reader->GetExecutive()->Update(), 0) << c.name;
+    EXPECT_EQ(errors->Count, 1) << c.name;
+    EXPECT_NE(errors->Last.find(c.who), std::string::npos) << c.name << ": " << errors->Last;
+    EXPECT_NE(errors->Last.find(c.why), std::string::npos) << c.name << ": " << errors->Last;
+    EXPECT_NE(errors->Last.find(c.name), std::string::npos) << errors->Last; // the file
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << c.name;
+    EXPECT_EQ(reader->GetNumberOfBones(), 0) << c.name;
+  }
+  const Case good[] = {
+    { "plain", "", "", kIdentity, "", "" },
+    { "tiny-uniform-scale", R"(,"scale":[1e-6,1e-6,1e-6])", "", kIdentity, "", "" },
+    { "mirror", R"(,"scale":[-1,1,1])", "", kIdentity, "", "" },
+  };
+  for (const Case& c : good)
+  {
+    vtkNew<vtkSkinnedMeshReaderLCT> reader;
+    vtkNew<lct_test::ErrorCounter> errors;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    const std::string path = triangleCharacter(c.name, c.meshNode, c.boneNode, c.inverseBind);
+    reader->SetFileName(path.c_str());
+    ASSERT_EQ(reader->GetExecutive()->Update(), 1) << c.name << ": " << errors->Last;
+    vtkPolyData* out = reader->GetOutput();
+    ASSERT_EQ(out->GetNumberOfPoints(), 3) << c.name;
+    vtkDataArray* normals = out->GetPointData()->GetNormals();
+    ASSERT_NE(normals, nullptr) << c.name;
+    for (vtkIdType i = 0; i < 3; ++i)
+    {
+      double n[3];
+      normals->GetTuple(i, n);
+      EXPECT_NEAR(vtkMath::Norm(n), 1.0, 1e-6) << c.name << " " << i; // not NaN
+    }
+    EXPECT_EQ(reader->GetNumberOfBones(), 1) << c.name;
+    EXPECT_EQ(errors->Count, 0) << c.name << ": " << errors->Last;
+  }
 }
