@@ -467,3 +467,51 @@ TEST(SegmentPathMetric, ASegmentThatCannotBeMeasuredIsAnErrorNotZero)
   EXPECT_NE(errors->Last.find("has 1 cameras"), std::string::npos) << errors->Last;
   EXPECT_EQ(metric->GetTotalCameraSpaceExcess(), kept);
 }
+
+// Audit (session 28): 65 samples evenly spaced in time under-measured a segment whose speed is
+// uneven (keys at 0, 1, 1.001 and 4: 48.5 % on screen where the path's length gives 50.7 %), so
+// the "resolution the metric chooses" depended on the keys' timing. The samples are now refined
+// until the excess changes by less than 0.01 percentage points.
+TEST(SegmentPathMetric, UnevenKeyTimesAreSampledUntilTheLengthsConverge)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCameraPathMetric> metric;
+  const double times[4] = { 0.0, 1.0, 1.001, 4.0 };
+  const double positions[4][3] = { { 0, 0, 10 }, { 8, 1, 6 }, { 8, -1, -6 }, { -9, 0, -3 } };
+  const double focal[4][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 0, 0.3, 0 }, { 0, 0, 0 } };
+  const double up[4][3] = { { 0, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(positions[k][0], positions[k][1], positions[k][2]);
+    key->SetFocalPoint(focal[k][0], focal[k][1], focal[k][2]);
+    key->SetViewUp(up[k][0], up[k][1], up[k][2]);
+    ASSERT_EQ(path->AddCamera(times[k], key), 1);
+    ASSERT_EQ(metric->AddKeyCamera(times[k], key), 1);
+  }
+  vtkNew<vtkPoints> points;
+  for (const auto& p : randomPoints(6, -1.0, 1.0))
+  {
+    points->InsertNextPoint(p.data());
+  }
+  metric->SetPoints(points);
+  std::vector<double> coarse, fine;
+  for (const int start : { 65, 1000 })
+  {
+    ASSERT_EQ(metric->SetSamplesPerSegment(start), 1);
+    ASSERT_EQ(metric->EvaluateSegments(path), 1);
+    EXPECT_GT(metric->GetSamplesPerSegmentUsed(), start); // refined at least once
+    std::vector<double>& values = start == 65 ? coarse : fine;
+    for (int k = 0; k < 3; ++k)
+    {
+      values.push_back(metric->GetSegmentCameraSpaceExcess(k));
+      values.push_back(metric->GetSegmentScreenSpaceExcess(k));
+    }
+    values.push_back(metric->GetTotalCameraSpaceExcess());
+    values.push_back(metric->GetTotalScreenSpaceExcess());
+  }
+  for (std::size_t i = 0; i < coarse.size(); ++i)
+  {
+    EXPECT_NEAR(coarse[i], fine[i], 0.01) << i;
+  }
+}
