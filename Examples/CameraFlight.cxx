@@ -42,9 +42,9 @@ int main(int argc, char* argv[])
   // Per key segment, at the metric's own resolution, against the true key cameras; VTK's path
   // also with the window centre lerped between the keys (it ignores the window centre: the fair
   // baseline).
-  std::printf("CameraFlight: path metric per key segment (%d cameras per segment, against the "
-              "true keys; excess camera / screen %%, key miss camera / screen %%)\n",
-    metric->GetSamplesPerSegment());
+  std::printf("CameraFlight: path metric per key segment (cameras per segment until the excess "
+              "converges, against the true keys; excess camera / screen %%, key miss camera / "
+              "screen %%)\n");
   const auto print = [&](const char* name, int ok) {
     if (!ok)
     {

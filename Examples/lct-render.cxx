@@ -99,8 +99,8 @@ vtkTransformInterpolatorLCT) offscreen to DIR/frame_NNNN.png, DIR/video.ogv (Ogg
 DIR/contact_sheet.png (4x4 evenly spaced frames), and prints the path-quality metric
 (vtkCameraPathMetric::EvaluateSegments: mean excess path length of the scene's points, camera
 space and screen, per key segment and in total, against the true key cameras, with how far the
-path misses its keys; up to 65 cameras per segment, whatever --frames is; with --compare also
-VTK's path, as it is and with the window centre lerped between the keys).
+path misses its keys; sampled per segment until the excess converges, whatever --frames is;
+with --compare also VTK's path, as it is and with the window centre lerped between the keys).
 
 What is drawn: the objects of the keys file's "scene" section and the --mesh meshes, nothing
 else. The built-in demo scene (floor, pedestal, the Wuson model, sphere, cube, cone; 6 x 6 units
@@ -2781,7 +2781,7 @@ int main(int argc, char* argv[])
         name, metric->GetTotalCameraSpaceExcess(), metric->GetTotalScreenSpaceExcess(),
         metric->GetLargestKeyMissCameraSpace(), metric->GetLargestKeyMissScreenSpace(),
         metric->GetNumberOfPointsLeavingViewBetweenKeys(), points, segments,
-        metric->GetSamplesPerSegment());
+        metric->GetSamplesPerSegmentUsed());
       for (int k = 0; k < std::min(segments, 8); ++k)
       {
         // The times at which the path passes the two keys (their arrival times under constant

@@ -30,6 +30,8 @@ constexpr double kConvergedExcess = 0.01;
 constexpr int kMaxRefinedSamplesPerSegment = 4097;
 /// The samples the metric keeps at most (256 bytes each).
 constexpr double kMaxSamples = 2e6;
+/// Refinement stops before points x samples exceeds this (each a projection: seconds of work).
+constexpr double kMaxProjections = 2e8;
 } // namespace
 
 namespace
@@ -205,8 +207,9 @@ int vtkCameraPathMetric::MeasureSegments(
     lct::measureSegments(keyViews, keyProjections, views, projections, n, points, this->Aspect);
   const double segments = static_cast<double>(keys.size() - 1);
   bool converged = false;
+  const double pointCount = static_cast<double>(points.size());
   while (!converged && 2 * n - 1 <= kMaxRefinedSamplesPerSegment &&
-    segments * (2 * n - 1) <= kMaxSamples)
+    segments * (2 * n - 1) <= kMaxSamples && pointCount * segments * (2 * n - 1) <= kMaxProjections)
   {
     n = 2 * n - 1;
     if (!sampleSegments(n))
@@ -263,6 +266,7 @@ int vtkCameraPathMetric::MeasureSegments(
                     << " samples per segment (the sample budget); it is measured there.");
   }
   this->SamplesPerSegmentUsed = n;
+  this->Converged = converged ? 1 : 0;
   this->Segments->Result = std::move(r);
   this->Segments->PassTimes = std::move(pass);
   const lct::SegmentPathMetricResult& out = this->Segments->Result;
@@ -555,6 +559,7 @@ void vtkCameraPathMetric::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfPointsLeavingView: " << this->NumberOfPointsLeavingView << "\n";
   os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
   os << indent << "SamplesPerSegmentUsed: " << this->SamplesPerSegmentUsed << "\n";
+  os << indent << "Converged: " << this->Converged << "\n";
   os << indent << "NumberOfKeyCameras: " << this->GetNumberOfKeyCameras() << "\n";
   os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
   os << indent << "TotalCameraSpaceExcess: " << this->TotalCameraSpaceExcess << " %\n";

@@ -133,17 +133,21 @@ public:
    * Cameras sampled per key segment by EvaluateSegments to start with, both keys included.
    * Default 65; 2 to 1000. EvaluateSegments then refines the samples (n -> 2 n - 1) until no
    * excess, per segment or in total, changes by more than 0.01 percentage points, up to 4097
-   * per segment and 2e6 in all (a warning says when that budget stops it first): uniform samples
-   * in time under-measure a segment whose speed is uneven (keys at 0, 1, 1.001 and 4 read 48.5 %
-   * at 65 where the path gives 50.7 %). It is the metric's resolution, not the number of frames a
-   * user renders; lower it only for paths with very many keys (the samples' matrices are kept,
-   * 256 bytes each). GetSamplesPerSegmentUsed() gives the last evaluation's.
+   * per segment, 2e6 in all and 2e8 point projections (a warning says when that budget stops it
+   * first): uniform samples in time under-measure a segment whose speed is uneven (keys at 0, 1,
+   * 1.001 and 4 read 48.5 % at 65 where the path gives 50.7 %). It is the metric's resolution, not
+   * the number of frames a user renders; lower it only for paths with very many keys (the
+   * samples' matrices are kept, 256 bytes each). GetSamplesPerSegmentUsed() gives the last
+   * evaluation's.
    */
   virtual int SetSamplesPerSegment(int value);
   int GetSamplesPerSegmentMinValue() { return 2; }
   int GetSamplesPerSegmentMaxValue() { return 1000; }
   vtkGetMacro(SamplesPerSegment, int);
   vtkGetMacro(SamplesPerSegmentUsed, int);
+  /// Whether the last EvaluateSegments converged within the budget (else it warned: typically
+  /// points passing close to the camera's plane, whose screen paths have no bounded length).
+  vtkGetMacro(Converged, int);
   ///@}
 
   ///@{
@@ -199,6 +203,7 @@ protected:
   int NumberOfSamples = 11;
   int SamplesPerSegment = 65;
   int SamplesPerSegmentUsed = 0;
+  int Converged = 0;
   double CameraSpaceExcess = 0.0;
   double ScreenSpaceExcess = 0.0;
   int NumberOfPointsLeavingView = 0;

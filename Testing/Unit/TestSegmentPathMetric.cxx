@@ -501,6 +501,7 @@ TEST(SegmentPathMetric, UnevenKeyTimesAreSampledUntilTheLengthsConverge)
     ASSERT_EQ(metric->SetSamplesPerSegment(start), 1);
     ASSERT_EQ(metric->EvaluateSegments(path), 1);
     EXPECT_GT(metric->GetSamplesPerSegmentUsed(), start); // refined at least once
+    EXPECT_EQ(metric->GetConverged(), 1);
     std::vector<double>& values = start == 65 ? coarse : fine;
     for (int k = 0; k < 3; ++k)
     {
