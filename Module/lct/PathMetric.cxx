@@ -36,7 +36,9 @@ PathMetricResult measurePath(
       const Eigen::Vector3d c = (views[s] * p).head<3>();
       const Eigen::Vector4d clip = projections[s] * p;
       // Behind the camera, x / w and y / w are finite but mirrored: no screen position.
-      const bool front = clip.w() > 0.0;
+      // In front: ahead of the camera (camera space looks down -z), which a parallel projection's
+      // w = 1 does not say; for a perspective one w = -z.
+      const bool front = clip.w() > 0.0 && c.z() < 0.0;
       const Eigen::Vector2d ndc =
         front ? Eigen::Vector2d(clip.head<2>() / clip.w()) : Eigen::Vector2d::Zero();
       if (!front || std::abs(ndc.x()) > 1.0 || std::abs(ndc.y()) > 1.0)

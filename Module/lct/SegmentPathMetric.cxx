@@ -25,7 +25,9 @@ Projected project(const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection
   Projected out;
   out.camera = (view * p).head<3>();
   const Eigen::Vector4d clip = projection * p;
-  out.inFront = clip.w() > 0.0;
+  // Ahead of the camera (camera space looks down -z): a parallel projection's w is 1 for points
+  // behind it too, which vtkCamera's clipping range never shows.
+  out.inFront = clip.w() > 0.0 && out.camera.z() < 0.0;
   const Eigen::Vector2d ndc =
     out.inFront ? Eigen::Vector2d(clip.head<2>() / clip.w()) : Eigen::Vector2d::Zero();
   out.inView = out.inFront && std::abs(ndc.x()) <= 1.0 && std::abs(ndc.y()) <= 1.0;

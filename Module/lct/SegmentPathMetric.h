@@ -23,6 +23,7 @@
  *   way it points, as in pixels;
  * - key miss at key k: the mean over the points of |path(t_k) - K_k| in camera space, in % of
  *   the point's distance from the key camera, and on the screen in % of the screen height;
+ * - in front of the camera: ahead of it in camera space (z < 0), for parallel projections too;
  * - points leaving the view on segment k: in front of the camera and within [-1, 1]^2 at both
  *   true keys, and not so at some sample of the segment (a point outside the view at a key is
  *   the user's framing, not the path's doing).

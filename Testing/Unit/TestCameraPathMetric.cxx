@@ -259,3 +259,30 @@ TEST(CameraPathMetric, APointBehindTheCameraHasNoScreenPath)
     << errors->Last;
   EXPECT_EQ(metric->GetScreenSpaceExcess(), ahead);
 }
+
+// Audit (session 28): with a parallel projection w is 1 everywhere, so a point the camera had
+// passed (behind it, which vtkCamera's clipping range never shows) counted as in view.
+TEST(CameraPathMetric, AParallelCameraDoesNotSeeBehindItself)
+{
+  vtkNew<vtkCollection> cameras;
+  for (int i = 0; i <= 10; ++i)
+  {
+    vtkNew<vtkCamera> camera;
+    const double z = 10.0 - 2.0 * i; // from z = 10 to z = -10, looking down -z
+    camera->ParallelProjectionOn();
+    camera->SetParallelScale(2.0);
+    camera->SetPosition(0.05 * i, 0, z);
+    camera->SetFocalPoint(0.05 * i, 0, z - 10);
+    camera->SetViewUp(0, 1, 0);
+    cameras->AddItem(camera);
+  }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->InsertNextPoint(0.5, 0.3, 0.0);   // passed at z < 0
+  points->InsertNextPoint(0.2, 0.1, -50.0); // ahead all along
+  vtkNew<vtkCameraPathMetric> metric;
+  metric->SetPoints(points);
+  ASSERT_EQ(metric->EvaluateCameras(cameras), 1);
+  EXPECT_EQ(metric->GetPointLeftView(0), 1);
+  EXPECT_EQ(metric->GetPointLeftView(1), 0);
+  EXPECT_EQ(metric->GetNumberOfPointsLeavingView(), 1);
+}
