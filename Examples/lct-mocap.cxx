@@ -16,8 +16,8 @@
 #include "lct/MotionError.h"
 
 #include <vtkAxis.h>
-#include <vtkCommand.h>
 #include <vtkChartXY.h>
+#include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
@@ -179,12 +179,26 @@ std::string Parse(int argc, char* argv[], Arguments& a)
       {
         return arg + " needs a value";
       }
+      // The form here (a usage error, exit 2); the bound against the file's rows once it is read.
+      int first = 0, last = 0;
+      char colon = 0;
+      std::istringstream range(a.frames);
+      if (!(range >> first >> colon >> last) || colon != ':' || !range.eof() || first < 0 ||
+        last <= first)
+      {
+        return "--frames " + a.frames + ": want A:B, integers with 0 <= A < B";
+      }
     }
     else if (arg == "--rotation-order")
     {
       if (!value(a.rotationOrder))
       {
         return arg + " needs a value";
+      }
+      if (!lct::isRotationOrder(a.rotationOrder))
+      {
+        return "--rotation-order " + a.rotationOrder +
+          ": want a permutation of XYZ (e.g. ZXY, the CMU files' order)";
       }
     }
     else if (arg == "--degree")
@@ -288,17 +302,18 @@ bool Slice(lct_mocap::Clip& clip, const std::string& range, std::string& why)
   int last = 0;
   char colon = 0;
   std::istringstream in(range);
-  if (!(in >> first >> colon >> last) || colon != ':' || !in.eof() || first < 0 ||
-    last <= first || last > clip.animation.frames)
+  if (!(in >> first >> colon >> last) || colon != ':' || !in.eof() || first < 0 || last <= first ||
+    last > clip.animation.frames)
   {
-    why = "--frames " + range + ": want A:B with 0 <= A < B <= " +
-      std::to_string(clip.animation.frames);
+    why = "--frames " + range +
+      ": want A:B with 0 <= A < B <= " + std::to_string(clip.animation.frames);
     return false;
   }
   lct::SkeletalAnimation& a = clip.animation;
   const std::size_t joints = a.joints.size();
-  a.locals = std::vector<Eigen::Matrix4d>(a.locals.begin() + static_cast<std::ptrdiff_t>(first * joints),
-    a.locals.begin() + static_cast<std::ptrdiff_t>(last * joints));
+  a.locals =
+    std::vector<Eigen::Matrix4d>(a.locals.begin() + static_cast<std::ptrdiff_t>(first * joints),
+      a.locals.begin() + static_cast<std::ptrdiff_t>(last * joints));
   a.frames = last - first;
   return true;
 }
@@ -313,7 +328,8 @@ int Compress(const Arguments& args)
     return 1;
   }
   double tolerance = 0.0;
-  if (!lct_mocap::ParseTolerance(args.tolerance.empty() ? "1%" : args.tolerance, clip.height, tolerance, why))
+  if (!lct_mocap::ParseTolerance(
+        args.tolerance.empty() ? "1%" : args.tolerance, clip.height, tolerance, why))
   {
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
     return 2;
@@ -349,15 +365,15 @@ int Compress(const Arguments& args)
   const double duration = clip.animation.frames * clip.animation.frameTime;
   std::printf("%s: %d rows x %d channels, %d joints, H = %.4g\n", args.input.c_str(),
     clip.animation.frames, clip.channels, clip.animation.jointCount(), clip.height);
-  std::printf("tolerance %.4g (%.4g %% of H): max %.4g (%.4g %%), p99 %.4g, mean %.4g\n",
-    tolerance, 100.0 * tolerance / clip.height, report.error.max,
-    100.0 * report.error.max / clip.height, report.error.p99, report.error.mean);
+  std::printf("tolerance %.4g (%.4g %% of H): max %.4g (%.4g %%), p99 %.4g, mean %.4g\n", tolerance,
+    100.0 * tolerance / clip.height, report.error.max, 100.0 * report.error.max / clip.height,
+    report.error.p99, report.error.mean);
   std::printf("%s: %zu bytes, factor %.1f (raw %.0f bytes); %d curve tracks (%d cubic), %d "
               "control points, %d constant tracks\n",
     args.output.c_str(), report.bytes, raw / static_cast<double>(report.bytes), raw,
     report.curveTracks, report.cubicTracks, report.controlPoints, report.constantTracks);
-  std::printf("compressed in %.2f s (%.1fx real time, %d trials)\n", seconds,
-    duration / seconds, report.trials);
+  std::printf("compressed in %.2f s (%.1fx real time, %d trials)\n", seconds, duration / seconds,
+    report.trials);
   return 0;
 }
 
@@ -379,7 +395,8 @@ int Decompress(const Arguments& args)
     std::cerr << "lct-mocap: " << args.input << ": " << why << "; nothing written.\n";
     return 1;
   }
-  const std::string order = args.rotationOrder.empty() ? metadata.rotationOrder : args.rotationOrder;
+  const std::string order =
+    args.rotationOrder.empty() ? metadata.rotationOrder : args.rotationOrder;
   std::ostringstream text;
   if (!lct::writeBVH(motion.value, order, text, &why))
   {
@@ -411,7 +428,8 @@ bool ReadAny(const std::string& path, lct_mocap::Clip& clip, std::string& why)
     {
       return false;
     }
-    const lct::Result<lct::SkeletalAnimation> motion = lct::decompressMotion(bytes, &metadata, &why);
+    const lct::Result<lct::SkeletalAnimation> motion =
+      lct::decompressMotion(bytes, &metadata, &why);
     if (!motion)
     {
       why = path + ": " + why;
@@ -435,11 +453,12 @@ int Compare(const Arguments& args)
     std::cerr << "lct-mocap: " << why << "\n";
     return 1;
   }
-  if (a.animation.frames != b.animation.frames || a.animation.jointCount() != b.animation.jointCount())
+  if (a.animation.frames != b.animation.frames ||
+    a.animation.jointCount() != b.animation.jointCount())
   {
     std::cerr << "lct-mocap: " << args.input << " has " << a.animation.frames << " rows and "
-              << a.animation.jointCount() << " joints, " << args.second << " "
-              << b.animation.frames << " and " << b.animation.jointCount() << ": not comparable\n";
+              << a.animation.jointCount() << " joints, " << args.second << " " << b.animation.frames
+              << " and " << b.animation.jointCount() << ": not comparable\n";
     return 1;
   }
   for (int j = 0; j < a.animation.jointCount(); ++j)
@@ -452,7 +471,8 @@ int Compare(const Arguments& args)
     }
   }
   double tolerance = 0.0;
-  if (!args.tolerance.empty() && !lct_mocap::ParseTolerance(args.tolerance, a.height, tolerance, why))
+  if (!args.tolerance.empty() &&
+    !lct_mocap::ParseTolerance(args.tolerance, a.height, tolerance, why))
   {
     std::cerr << "lct-mocap: " << why << "\n";
     return 2;
@@ -460,7 +480,8 @@ int Compare(const Arguments& args)
   const lct::PositionErrorStatistics e =
     lct::positionErrors(lct::worldPositions(a.animation), b.animation);
   const double h = a.height > 0.0 ? 100.0 / a.height : 0.0;
-  std::printf("%s vs %s: max %.6g (%.4g %% of H), p99 %.6g, mean %.6g; worst at row %d, joint '%s'\n",
+  std::printf(
+    "%s vs %s: max %.6g (%.4g %% of H), p99 %.6g, mean %.6g; worst at row %d, joint '%s'\n",
     args.input.c_str(), args.second.c_str(), e.max, e.max * h, e.p99, e.mean, e.worstFrame,
     a.animation.joints[static_cast<std::size_t>(e.worstJoint)].name.c_str());
   if (!args.tolerance.empty() && !(e.max <= tolerance))
@@ -490,8 +511,8 @@ int Info(const Arguments& args)
   const double raw = 4.0 * motion.value.frames * metadata.inputChannels;
   std::printf("%s: .lctm version 1, %zu bytes\n", args.input.c_str(), bytes.size());
   std::printf("%d rows at %.6g s, %d joints, input channels %d, rotation order %s\n",
-    motion.value.frames, motion.value.frameTime, motion.value.jointCount(),
-    metadata.inputChannels, metadata.rotationOrder.c_str());
+    motion.value.frames, motion.value.frameTime, motion.value.jointCount(), metadata.inputChannels,
+    metadata.rotationOrder.c_str());
   std::printf("tolerance %.4g (%.4g %% of H = %.4g), factor %.1f\n", metadata.tolerance,
     metadata.height > 0 ? 100.0 * metadata.tolerance / metadata.height : 0.0, metadata.height,
     raw / static_cast<double>(bytes.size()));
