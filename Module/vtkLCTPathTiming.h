@@ -38,30 +38,41 @@ constexpr double kFlatness = 1e-5;
 constexpr int kMaximumHalvings = 12;
 constexpr size_t kMaximumSamples = size_t(1) << 21;
 
-/// Whether `value` may be a Kochanek-Bartels parameter; else an error from `self`.
-inline bool CheckTensionContinuityBias(vtkObject* self, const char* caller, double value)
+/// Whether `value` may be a Kochanek-Bartels parameter; else an error from `self` naming the
+/// call (`caller`, with the key's time for a per-key setter) and the argument (`name`).
+inline bool CheckTensionContinuityBias(
+  vtkObject* self, const std::string& caller, double value, const char* name = nullptr)
 {
   if (value >= -1.0 && value <= 1.0)
   {
     return true;
   }
-  vtkErrorWithObjectMacro(self, << caller << "(" << lct::formatNumber(value)
-                                << "): tension, continuity and bias lie in [-1, 1] "
-                                   "(vtkKochanekSpline's range); unchanged.");
+  vtkErrorWithObjectMacro(self, << caller << ": " << (name ? name : "the value") << " "
+                                << lct::formatNumber(value)
+                                << " is outside [-1, 1], the range of tension, continuity and "
+                                   "bias (vtkKochanekSpline's); unchanged.");
   return false;
 }
 
-/// Whether `value` may be an ease amount; else an error from `self`.
-inline bool CheckEase(vtkObject* self, const char* caller, double value)
+/// Whether `value` may be an ease amount; else an error from `self` (as above).
+inline bool CheckEase(
+  vtkObject* self, const std::string& caller, double value, const char* name = nullptr)
 {
   if (lct::isValidEase(value))
   {
     return true;
   }
-  vtkErrorWithObjectMacro(self, << caller << "(" << lct::formatNumber(value)
-                                << "): an ease lies in [0, 1] (0: none, 1: from or to rest); "
+  vtkErrorWithObjectMacro(self, << caller << ": " << (name ? name : "the ease") << " "
+                                << lct::formatNumber(value)
+                                << " is outside [0, 1] (0: none, 1: from or to rest); "
                                    "unchanged.");
   return false;
+}
+
+/// A per-key setter's name with the key's time, for its messages: "SetKeyEase(t = 2)".
+inline std::string KeyCaller(const char* caller, double t)
+{
+  return std::string(caller) + "(t = " + lct::formatNumber(t) + ")";
 }
 
 /// The error for a per-key setter given a time without a key.
@@ -114,9 +125,10 @@ int SetKeyTensionContinuityBias(
     ReportNoKey(self, caller, t);
     return 0;
   }
-  if (!CheckTensionContinuityBias(self, caller, tcb.tension) ||
-    !CheckTensionContinuityBias(self, caller, tcb.continuity) ||
-    !CheckTensionContinuityBias(self, caller, tcb.bias))
+  const std::string at = KeyCaller(caller, t);
+  if (!CheckTensionContinuityBias(self, at, tcb.tension, "the tension") ||
+    !CheckTensionContinuityBias(self, at, tcb.continuity, "the continuity") ||
+    !CheckTensionContinuityBias(self, at, tcb.bias, "the bias"))
   {
     return 0;
   }
@@ -136,7 +148,9 @@ int SetKeyEase(vtkObject* self, Keys& keys, double t, double arriving, double le
     ReportNoKey(self, caller, t);
     return 0;
   }
-  if (!CheckEase(self, caller, arriving) || !CheckEase(self, caller, leaving))
+  const std::string at = KeyCaller(caller, t);
+  if (!CheckEase(self, at, arriving, "the arriving ease") ||
+    !CheckEase(self, at, leaving, "the leaving ease"))
   {
     return 0;
   }

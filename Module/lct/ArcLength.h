@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace lct
@@ -56,6 +57,11 @@ public:
   double curveTime(double t, PositionAt&& positionAt) const;
 
 private:
+  /// curveTime's solve: Illinois regula falsi, then bisection to a one-ulp bracket (~64 halvings
+  /// of a segment at most).
+  static constexpr int kIllinoisIterations = 12;
+  static constexpr int kMaximumIterations = 128;
+
   std::vector<double> Tau;
   std::vector<double> Out;
   std::vector<double> Chord;
@@ -96,7 +102,10 @@ double ArcLengthTime<Dim>::curveTime(double t, PositionAt&& positionAt) const
   double tau = linear;
   int side = 0;
   Point p;
-  for (int iteration = 0; iteration < 12; ++iteration)
+  // Illinois steps, then bisection, until |f| is at round-off or the bracket is one ulp wide:
+  // stopped after 12 steps, the last iterate could lie on either side of the root, and a point
+  // between keys 1e-12 apart in time moved backwards by 3e-4 of its segment.
+  for (int iteration = 0; iteration < kMaximumIterations; ++iteration)
   {
     if (!positionAt(tau, p) || !p.allFinite())
     {
@@ -105,7 +114,7 @@ double ArcLengthTime<Dim>::curveTime(double t, PositionAt&& positionAt) const
     const double f = (p - this->P[j]).stableNorm() - d; // no square out of range
     if (std::abs(f) <= 1e-12 * this->Chord[j])
     {
-      break;
+      return tau;
     }
     if (f < 0.0)
     {
@@ -127,10 +136,17 @@ double ArcLengthTime<Dim>::curveTime(double t, PositionAt&& positionAt) const
       }
       side = 1;
     }
-    const double next = lo - fLo * (hi - lo) / (fHi - fLo);
-    tau = std::isfinite(next) ? std::clamp(next, lo, hi) : 0.5 * (lo + hi);
+    if (!(std::nextafter(lo, hi) < hi))
+    {
+      // The root is between two adjacent doubles: lo, the last time short of the distance, so
+      // that a later output time never maps to an earlier curve time.
+      return lo;
+    }
+    const double next =
+      iteration < kIllinoisIterations ? lo - fLo * (hi - lo) / (fHi - fLo) : lo + 0.5 * (hi - lo);
+    tau = std::isfinite(next) ? std::clamp(next, lo, hi) : lo + 0.5 * (hi - lo);
   }
-  return tau;
+  return lo;
 }
 
 template <int Dim>
@@ -160,14 +176,17 @@ bool ArcLengthTime<Dim>::build(
     return false;
   }
   // Moving intervals share the time that the still ones do not keep, in proportion to length.
-  // Still: below 1e-12 of the path's length, or of its coordinates' size (round-off of a point
-  // that does not move, e.g. an eye wobbling by 1e-15 through a zoom, is not a path).
+  // Still: below 1e-12 of the path's length, or within round-off of its coordinates (64 ulps of
+  // their size: a point that does not move, e.g. an eye wobbling by 1e-15 through a zoom, is not
+  // a path). 1e-12 of the size read a 1-unit path 1e12 from the origin as still, and kept its
+  // times.
   double size = 0.0;
   for (const Point& p : positions)
   {
     size = std::max(size, p.cwiseAbs().maxCoeff());
   }
-  const double still = 1e-12 * std::max(length, size);
+  const double still =
+    std::max(1e-12 * length, 64.0 * std::numeric_limits<double>::epsilon() * size);
   std::vector<char> moving(m - 1);
   double stillTime = 0.0, movingLength = 0.0;
   for (size_t j = 0; j + 1 < m; ++j)

@@ -392,7 +392,14 @@ TEST(TimingControls, TransformTimingBadInputIsRefusedAndChangesNothing)
   EXPECT_EQ(path->SetEaseOut(1.01), 0);
   EXPECT_EQ(path->SetKeyEase(0.5, 0.2, 0.2), 0); // no key at 0.5
   EXPECT_EQ(path->SetKeyEase(1.0, 0.2, std::nan("")), 0);
+  // The message names the key and the argument (it read "SetKeyEase(nan)", like a key time).
+  EXPECT_NE(errors->Last.find("SetKeyEase(t = 1): the leaving ease nan is outside [0, 1]"),
+    std::string::npos)
+    << errors->Last;
   EXPECT_EQ(path->SetKeyTensionContinuityBias(1.0, 0, 2, 0), 0);
+  EXPECT_NE(errors->Last.find("SetKeyTensionContinuityBias(t = 1): the continuity 2 is outside"),
+    std::string::npos)
+    << errors->Last;
   EXPECT_EQ(path->SetKeyTensionContinuityBias(std::nan(""), 0, 0, 0), 0);
   EXPECT_EQ(path->ClearKeyTiming(7.0), 0);
   EXPECT_EQ(path->SetConstantSpeedPoint(0, NAN, 0), 0);
@@ -750,4 +757,67 @@ TEST(TimingControls, ConstantSpeedOfAPointThatOverflowsNamesTheCause)
     std::string::npos)
     << errors->Last;
   EXPECT_TRUE(m->IsIdentity());
+}
+
+// Audit (session 28): the constant-speed table called a sample interval still below 1e-12 of the
+// coordinates' size, so a path of unit steps 1e12 from the origin (or of 1e-4 steps in
+// Earth-centred coordinates, 6.4e6) kept its plain timing with status 1. Still is now round-off
+// of the coordinates (64 ulps).
+TEST(ConstantSpeed, APathFarFromTheOriginMovesEvenly)
+{
+  for (const double origin : { 0.0, 6.4e6, 1e12 })
+  {
+    const double unit = origin == 6.4e6 ? 1e-4 : 1.0; // steps well above the coordinates' ulp
+    vtkNew<vtkTransformInterpolatorLCT> path;
+    path->SetInterpolationTypeToLinear();
+    const double times[3] = { 0, 1, 4 };
+    const double xy[3][2] = { { 0, 0 }, { 1, 0 }, { 2, 1 } };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkTransform> key;
+      key->Translate(origin + unit * xy[k][0], unit * xy[k][1], 0);
+      ASSERT_EQ(path->AddTransform(times[k], key), 1);
+    }
+    path->ConstantSpeedOn();
+    vtkNew<vtkDoubleArray> arrivals;
+    ASSERT_EQ(path->GetKeyArrivalTimes(arrivals), 1);
+    // Segments of length 1 and sqrt(2) shared out over 4 time units.
+    const double expected = 4.0 / (1.0 + std::sqrt(2.0));
+    EXPECT_NEAR(arrivals->GetValue(1), expected, origin == 0.0 ? 1e-9 : 1e-3) << origin;
+    vtkNew<vtkMatrix4x4> m;
+    ASSERT_EQ(path->InterpolateTransform(0.5, m), 1);
+    EXPECT_NEAR((m->GetElement(0, 3) - origin) / unit, 0.5 / expected, 2e-3) << origin;
+  }
+}
+
+// Audit (session 28): the arc-length solve stopped after 12 Illinois steps and returned the last
+// iterate, on either side of the root: between keys 1e-12 apart in time the point moved
+// backwards 950 times (by up to 3e-4 of the segment). It now ends on a one-ulp bracket.
+TEST(ConstantSpeed, ThePointNeverMovesBackwardsBetweenKeysCloseInTime)
+{
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  const double times[4] = { 0, 1, 1 + 1e-12, 2 };
+  const double xy[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 2, 1 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkTransform> key;
+    key->Translate(xy[k][0], xy[k][1], 0);
+    ASSERT_EQ(path->AddTransform(times[k], key), 1);
+  }
+  path->ConstantSpeedOn();
+  vtkNew<vtkDoubleArray> arrivals;
+  ASSERT_EQ(path->GetKeyArrivalTimes(arrivals), 1);
+  const double t1 = arrivals->GetValue(1), t2 = arrivals->GetValue(2);
+  ASSERT_LT(t1, t2);
+  vtkNew<vtkMatrix4x4> m;
+  double previous = -1.0;
+  int backwards = 0;
+  for (int i = 0; i <= 20000; ++i)
+  {
+    ASSERT_EQ(path->InterpolateTransform(t1 + (t2 - t1) * i / 20000.0, m), 1);
+    const double y = m->GetElement(1, 3);
+    backwards += y < previous ? 1 : 0;
+    previous = y;
+  }
+  EXPECT_EQ(backwards, 0);
 }
