@@ -599,12 +599,21 @@ struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
   bool start_object(std::size_t n)
   {
     this->Value();
-    this->Levels.push_back({ false, "", 0 });
+    this->Levels.push_back({ false, "", 0, {} });
     return Base::start_object(n);
   }
   bool key(string_t& k)
   {
-    this->Levels.back().Key = k;
+    Level& level = this->Levels.back();
+    level.Key = k;
+    // JSON leaves repeated keys to the reader, and nlohmann's DOM keeps the last: a second
+    // "camera" section or "position" would replace the first without a word, as a misspelt key
+    // would be ignored (refused by CheckKeys). The first repeat is noted and refused after the
+    // parse, at its path.
+    if (!level.Seen.insert(k).second && this->Duplicate.empty())
+    {
+      this->Duplicate = this->Path();
+    }
     return Base::key(k);
   }
   bool end_object()
@@ -615,7 +624,7 @@ struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
   bool start_array(std::size_t n)
   {
     this->Value();
-    this->Levels.push_back({ true, "", 0 });
+    this->Levels.push_back({ true, "", 0, {} });
     return Base::start_array(n);
   }
   bool end_array()
@@ -624,11 +633,31 @@ struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
     return Base::end_array();
   }
 
+  std::string Duplicate; // the path of the first key repeated in its object; "" if none
+
   template <class Exception>
   bool parse_error(size_t offset, const std::string&, const Exception& ex)
   {
     this->ErrorOffset = offset;
     this->ErrorMessage = ex.what();
+    this->ErrorPath = this->Path();
+    return false;
+  }
+
+private:
+  struct Level
+  {
+    bool Array;
+    std::string Key;            // objects: the last key read
+    size_t Count;               // arrays: the elements started
+    std::set<std::string> Seen; // objects: the keys read
+  };
+  std::vector<Level> Levels;
+
+  /// Where the parse is: `scene.objects.ball.color[0]`.
+  std::string Path() const
+  {
+    std::string path;
     for (size_t i = 0; i < this->Levels.size(); ++i)
     {
       const Level& l = this->Levels[i];
@@ -637,24 +666,15 @@ struct JsonBuilder : nlohmann::detail::json_sax_dom_parser<nlohmann::json>
       {
         // The element being read: the next one in the innermost array, the open one above it.
         const size_t index = innermost ? l.Count : (l.Count > 0 ? l.Count - 1 : 0);
-        this->ErrorPath += "[" + std::to_string(index) + "]";
+        path += "[" + std::to_string(index) + "]";
       }
       else if (!l.Key.empty())
       {
-        this->ErrorPath += (this->ErrorPath.empty() ? "" : ".") + Printable(l.Key);
+        path += (path.empty() ? "" : ".") + Printable(l.Key);
       }
     }
-    return false;
+    return path;
   }
-
-private:
-  struct Level
-  {
-    bool Array;
-    std::string Key; // objects: the last key read
-    size_t Count;    // arrays: the elements started
-  };
-  std::vector<Level> Levels;
 
   /// Counts a value (or a nested object or array) started in the enclosing array.
   bool Value()
@@ -1101,6 +1121,12 @@ public:
       throw InputError(this->File + ":" + LineColumn(text, at) + ": JSON parse error: " + what +
         (builder.ErrorPath.empty() ? "" : " (at " + builder.ErrorPath + ")") +
         (nanLike ? " (JSON has no NaN or Infinity: every value must be a finite number)" : ""));
+    }
+    if (!builder.Duplicate.empty())
+    {
+      this->Fail(builder.Duplicate +
+        ": appears twice in its object (JSON keeps only the last, so the first would be dropped "
+        "without a word); give each key once");
     }
     return doc;
   }

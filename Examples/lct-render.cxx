@@ -60,6 +60,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -200,7 +201,9 @@ fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = ms
   view_angle = 30, window_center = [0,0], view_shear = [0,0,1], parallel_scale = 1,
   parallel = false, clipping_range (none: reset per frame); at least 2 keys. Prop keys: time,
   and matrix (16 numbers, row-major, last row 0 0 0 1) or translate = [0,0,0],
-  rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0].
+  rotate = [0, 0,0,1] (degrees, axis), scale = [1,1,1], shear = [0,0,0]. A key is a pose: its
+  rotate is an orientation (720 and 0 are the same key, 270 is -90), and the path between two
+  keys turns the short way; key a turn of more than 180 degrees in steps below 180.
   Timing (see "timing" below), of the camera and of each props.NAME: tension = 0,
   continuity = 0, bias = 0 (each in [-1, 1]), tangents = monotone (catmull_rom), ease_in = 0,
   ease_out = 0 (each in [0, 1]), constant_speed = false; the camera's constant_speed_measure = eye_and_focal_point (eye,
@@ -551,6 +554,15 @@ bool EndsWith(const std::string& s, const char* tail)
   return s.size() > n && s.compare(s.size() - n, n, tail) == 0;
 }
 
+/// Whether a file name ends in the extension `tail` (".pvcc"), in any case (V0.PVCC).
+bool HasExtension(const std::string& s, const char* tail)
+{
+  std::string lower = s;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return EndsWith(lower, tail);
+}
+
 /// A decimal integer in [0, 999999999] (10 digits or more, signs, exponents: no).
 bool ParseInt(const std::string& s, int& out)
 {
@@ -748,7 +760,7 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
     {
       return "unknown option " + RenderKeys::Printable(a);
     }
-    else if (EndsWith(a, ".pvcc"))
+    else if (HasExtension(a, ".pvcc"))
     {
       if (o.CameraFiles.size() >= Limits::MaxKeys)
       {
@@ -756,7 +768,7 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
       }
       o.CameraFiles.push_back(a);
     }
-    else if (EndsWith(a, ".pvsm"))
+    else if (HasExtension(a, ".pvsm"))
     {
       if (!o.StateFile.empty())
       {
@@ -802,6 +814,22 @@ int CameraType(const std::string& name)
     return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION;
   }
   return vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SPLINE;
+}
+
+/// The keys-file name of an interpolation type (CameraType's inverse).
+const char* CameraTypeName(int type)
+{
+  switch (type)
+  {
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_LINEAR:
+      return "linear";
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_BSPLINE:
+      return "bspline";
+    case vtkCameraInterpolatorLCT::INTERPOLATION_TYPE_SUBDIVISION:
+      return "subdivision";
+    default:
+      return "spline";
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1858,7 +1886,8 @@ void Describe(const RenderKeys::Keys& keys, const std::vector<Prop>& props, bool
   std::printf(" (each track holds its first and last key outside its own range)\n");
   std::printf("camera keys (%s%s, clipping range %s):\n",
     cameraNote.empty() ? keys.Source.c_str() : cameraNote.c_str(),
-    (", " + keys.Interpolation).c_str(),
+    // The type the path uses: --interpolation and a .pvsm cue override the keys file's.
+    (std::string(", ") + CameraTypeName(cameraPath->GetInterpolationType())).c_str(),
     fixedClipping ? "interpolated from the keys" : "reset from the scene's bounds per frame");
   auto v3 = [](const double* v) {
     return "(" + Num(v[0]) + ", " + Num(v[1]) + ", " + Num(v[2]) + ")";
@@ -2404,6 +2433,7 @@ int main(int argc, char* argv[])
         keys.Props.clear(); // the built-in prop keys move the demo scene's cone
       }
     }
+    std::string cameraInterpolation = keys.Interpolation;
     if (!opt.CameraFiles.empty())
     {
       // ParaView camera files, in the order given, are the camera keys at t = 0, 1, 2, ...
@@ -2432,7 +2462,8 @@ int main(int argc, char* argv[])
       RenderKeys::StateCamera state = RenderKeys::ReadPvsm(opt.StateFile);
       inputs.push_back(opt.StateFile);
       keys.Camera = state.Keys;
-      keys.Interpolation = state.Interpolation;
+      // The cue's interpolation is the camera's: the keys file's props keep the file's default.
+      cameraInterpolation = state.Interpolation;
       keys.ConsistentRotation = false;
       keys.CameraTiming = RenderKeys::PathTiming(); // a state has no timing fields
       cameraNote = opt.StateFile + ", " + state.Cue + ", AnimationScene t = " + Num(state.Start) +
@@ -2451,7 +2482,7 @@ int main(int argc, char* argv[])
         " (VTK's vtkCameraInterpolator initialises in quadratic time)");
     }
     const std::string cameraScheme =
-      opt.Interpolation.empty() ? keys.Interpolation : opt.Interpolation;
+      opt.Interpolation.empty() ? cameraInterpolation : opt.Interpolation;
 
     cameraPath->SetInterpolationType(CameraType(cameraScheme));
     cameraPath->SetConsistentRotation(keys.ConsistentRotation);
