@@ -10,6 +10,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 
+#include <Eigen/SVD>
+
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -75,8 +77,9 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
   // The inverse state, as Inverse() will hand it out. MatrixLog: the principal log of M^-1 is
   // -log M. Polar: psi(M^-1) != -psi(M) unless the factors commute, but it has a closed form that
   // keeps the winding of the rotation exactly, (-A^-1 l, -w, -U Y U^T). Its matrix must be finite
-  // and its smallest stretch 1 / sigma_max normal, which ||A||_F < 1 / DBL_MIN guarantees in
-  // either parametrisation.
+  // and its smallest stretch 1 / sigma_max normal: ||A||_F < 1 / DBL_MIN guarantees it, and
+  // beyond that sigma_max itself decides (||A||_F exceeds it by up to sqrt(3): 3e307 I, whose
+  // inverse 3.3e-308 I is normal, was refused while Inverse() of 3.3e-308 I held it).
   const auto inverseCoordinates = p == lct::Parametrisation::MatrixLog
     ? lct::Result<lct::LogCoords>{ lct::LogCoords(-c), lct::Status::Ok }
     : lct::polarInverse(c, matrix.value);
@@ -85,7 +88,11 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
     : lct::Result<Eigen::Matrix4d>::failure(inverseCoordinates.status);
   const Eigen::Matrix3d linear = matrix.value.topLeftCorner<3, 3>();
   const double largest = linear.cwiseAbs().maxCoeff();
-  if (!inverse || !(largest * (linear / largest).norm() < 1.0 / std::numeric_limits<double>::min()))
+  const double limit = 1.0 / std::numeric_limits<double>::min();
+  const Eigen::Matrix3d unit = linear / largest;
+  const bool invertible = largest * unit.norm() < limit ||
+    largest * Eigen::JacobiSVD<Eigen::Matrix3d>(unit).singularValues()(0) < limit;
+  if (!inverse || !inverse.value.allFinite() || !invertible)
   {
     vtkErrorMacro(<< caller << ": the inverse of the resulting transform is not representable: "
                   << lct::describe(inverse ? lct::Status::OutOfRange : inverse.status)

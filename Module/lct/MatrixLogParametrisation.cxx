@@ -4,6 +4,7 @@
 #include "lct/Affine.h"
 #include "lct/Conditioning.h"
 #include "lct/DividedDifferences.h"
+#include "lct/PolarDecomposition.h"
 #include "lct/SO3.h"
 #include "lct/SVD3.h"
 #include "lct/Sym3.h"
@@ -242,7 +243,14 @@ constexpr double kLn2 = 0.69314718055994530942;
 double logDeterminant(const Eigen::Matrix3d& a)
 {
   const int e = unitScaleExponent(a);
-  return std::log(unitScaleDeterminant(scaledByPowerOfTwo(a, -e))) + 3.0 * e * kLn2;
+  const double det = unitScaleDeterminant(scaledByPowerOfTwo(a, -e));
+  if (det != 0.0)
+  {
+    return std::log(std::abs(det)) + 3.0 * e * kLn2;
+  }
+  // Underflowed at unit scale (diag(1e-110, 1, 1e110), determinant 1, read as out of range).
+  int exponent = 0;
+  return std::log(std::abs(unitScaleDeterminant(equilibrated(a, exponent)))) + exponent * kLn2;
 }
 
 /// The magnitudes this parametrisation handles (see kMagnitudeLimitExponent) and a condition
@@ -265,6 +273,8 @@ Status checkRange(const Eigen::Matrix3d& a, double logDet)
     const SingularValueDecomposition3 svd = singularValueDecomposition3(scaledByPowerOfTwo(a, -e));
     if (!(svd.sigma[2] > 0.0))
     {
+      // The smallest stretch underflowed at unit scale (callers map it: logDet is finite, so the
+      // determinant is not 0).
       return Status::Singular;
     }
     if (svd.sigma[0] > kMaxConditionNumber * svd.sigma[2])
@@ -378,7 +388,9 @@ Result<LogCoords> matrixLog(const Eigen::Matrix4d& m)
   const Status range = checkRange(a, logDet);
   if (range != Status::Ok)
   {
-    return R::failure(range);
+    // A determinant that validateAffine found positive: a smallest stretch that underflowed at
+    // unit scale is a condition far beyond kMaxConditionNumber, not a zero determinant.
+    return R::failure(range == Status::Singular ? Status::IllConditioned : range);
   }
   BlockFunction block = blockFunction(ScalarFunction::Log, a, m.topRightCorner<3, 1>(), 1.0);
   if (block.status != Status::Ok)

@@ -36,7 +36,35 @@ int determinantSign(const Eigen::Matrix3d& a)
     }
   }
   const double det = unitScaleDeterminant(scaledByPowerOfTwo(a, -unitScaleExponent(a)));
-  return det > 0.0 ? 1 : (det < 0.0 ? -1 : 0);
+  if (det != 0.0)
+  {
+    return det > 0.0 ? 1 : -1;
+  }
+  // 0 at unit scale may be an underflow of spread scales (lct::equilibrated); what is still 0
+  // is singular in double (the refusal then says so).
+  int exponent = 0;
+  const double balanced = unitScaleDeterminant(equilibrated(a, exponent));
+  return balanced > 0.0 ? 1 : (balanced < 0.0 ? -1 : 0);
+}
+
+Eigen::Matrix3d equilibrated(const Eigen::Matrix3d& a, int& exponent)
+{
+  // Positive factors: the sign of the determinant is kept, and powers of two keep it exact.
+  Eigen::Matrix3d e = a;
+  exponent = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const int k = unitScaleExponent(e.row(i));
+    e.row(i) = scaledByPowerOfTwo(Eigen::RowVector3d(e.row(i)), -k);
+    exponent += k;
+  }
+  for (int j = 0; j < 3; ++j)
+  {
+    const int k = unitScaleExponent(e.col(j));
+    e.col(j) = scaledByPowerOfTwo(Eigen::Vector3d(e.col(j)), -k);
+    exponent += k;
+  }
+  return e;
 }
 
 namespace
@@ -134,9 +162,16 @@ Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a)
   }
 
   const SingularValueDecomposition3 svd = singularValueDecomposition3(unit);
-  if (!svd.sigma.allFinite() || !(svd.sigma[2] > 0.0))
+  if (!svd.sigma.allFinite())
   {
-    return R::failure(Status::Singular);
+    return R::failure(Status::NumericalFailure);
+  }
+  if (!(svd.sigma[2] > 0.0))
+  {
+    // The determinant is not 0 (its sign is known above): the smallest stretch underflowed at
+    // unit scale, a condition far beyond kMaxConditionNumber (diag(1e-110, 1, 1e110), of
+    // determinant 1, was called singular).
+    return R::failure(Status::IllConditioned);
   }
   if (svd.sigma[0] > kMaxConditionNumber * svd.sigma[2])
   {

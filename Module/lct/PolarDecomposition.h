@@ -56,6 +56,11 @@ VTKLCT_EXPORT Result<PolarFactors> polarDecompose(const Eigen::Matrix3d& a);
 /// The sign of det A, decided accurately: -1, 0 or +1 (NaN input gives 0).
 VTKLCT_EXPORT int determinantSign(const Eigen::Matrix3d& a);
 
+/// A with its rows, then its columns, scaled to unit size by powers of two: det A =
+/// det(result) 2^exponent exactly, and det(result) does not underflow where A's scales are
+/// merely spread (diag(1e-110, 1, 1e110): det 1, but 1e-330 at unit scale).
+VTKLCT_EXPORT Eigen::Matrix3d equilibrated(const Eigen::Matrix3d& a, int& exponent);
+
 } // namespace lct
 
 #endif

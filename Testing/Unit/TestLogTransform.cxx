@@ -3,6 +3,7 @@
 #include "vtkLogTransform.h"
 
 #include "lct/Combination.h"
+#include "lct/PolarDecomposition.h"
 #include "lct/SO3.h"
 
 #include "RandomTransforms.h"
@@ -332,4 +333,50 @@ TEST(vtkLogTransform, BadInputIsReportedAndLeavesTheStateUnchanged)
   weights->InsertNextValue(1.0);
   EXPECT_EQ(vtkLogTransform::LinearCombination(items, weights, polar), 0);
   EXPECT_EQ(polarErrors->Count, 3);
+}
+
+// Audit (session 28): diag(1e-110, 1, 1e110), of determinant 1, was refused as "singular (a zero
+// determinant)" in both parametrisations (its determinant underflows at unit scale, and MatrixLog
+// called it out of its magnitude range); the cause is its condition, 1e220. And 3e307 I, whose
+// inverse 3.3e-308 I is normal, was refused as not invertible (a Frobenius-norm test), while
+// Inverse() of 3.3e-308 I held it.
+TEST(vtkLogTransform, SpreadScalesAreIllConditionedNotSingularAndHugeScalesInvert)
+{
+  for (const int parametrisation : { vtkLogTransform::POLAR, vtkLogTransform::MATRIX_LOG })
+  {
+    for (const Eigen::Vector3d d :
+      { Eigen::Vector3d(1e-110, 1, 1e110), Eigen::Vector3d(1, 1, 1e200) })
+    {
+      vtkNew<vtkLogTransform> t;
+      vtkNew<lct_test::ErrorCounter> errors;
+      t->AddObserver(vtkCommand::ErrorEvent, errors);
+      ASSERT_EQ(t->SetParametrisation(parametrisation), 1);
+      vtkNew<vtkMatrix4x4> m;
+      for (int i = 0; i < 3; ++i)
+      {
+        m->SetElement(i, i, d[i]);
+      }
+      EXPECT_EQ(t->SetMatrix(m), 0);
+      EXPECT_NE(errors->Last.find("too ill-conditioned"), std::string::npos) << errors->Last;
+      EXPECT_EQ(errors->Last.find("zero determinant"), std::string::npos) << errors->Last;
+    }
+    EXPECT_EQ(lct::determinantSign(Eigen::Vector3d(1e-110, 1, 1e110).asDiagonal()), 1);
+  }
+  vtkNew<vtkLogTransform> huge;
+  vtkNew<vtkMatrix4x4> m;
+  for (int i = 0; i < 3; ++i)
+  {
+    m->SetElement(i, i, 3e307);
+  }
+  ASSERT_EQ(huge->SetMatrix(m), 1);
+  huge->Inverse();
+  EXPECT_NEAR(huge->GetMatrix()->GetElement(0, 0) * 3e307, 1.0, 1e-12);
+  vtkNew<vtkLogTransform> tiny;
+  for (int i = 0; i < 3; ++i)
+  {
+    m->SetElement(i, i, 1.0 / 3e307);
+  }
+  ASSERT_EQ(tiny->SetMatrix(m), 1);
+  ASSERT_EQ(tiny->Scale(-1.0), 1);
+  EXPECT_NEAR(tiny->GetMatrix()->GetElement(0, 0) / 3e307, 1.0, 1e-12);
 }
