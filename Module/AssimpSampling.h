@@ -11,6 +11,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <utility>
 
 namespace lct_assimp
@@ -102,6 +108,46 @@ inline Eigen::Matrix4d sampleLocal(
   local.topLeftCorner<3, 3>() = rotation.normalized().toRotationMatrix() * scale.asDiagonal();
   local.topRightCorner<3, 1>() = position;
   return local;
+}
+
+/// Why a file must not be handed to assimp, or "": a PLY header declaring more elements than
+/// the file has bytes (each element takes at least one). assimp allocates for the declared
+/// count before it reads a value: a 189-byte PLY declaring 2e9 vertices grew both readers to
+/// several GB without returning. Other formats are left to assimp (see the README's limits).
+inline std::string declaredCountProblem(const std::string& file)
+{
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(file, error);
+  if (extension != ".ply" || error)
+  {
+    return "";
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines)
+  {
+    std::istringstream words(line);
+    std::string keyword, name, count;
+    words >> keyword;
+    if (keyword == "end_header")
+    {
+      break;
+    }
+    if (keyword == "element" && words >> name >> count)
+    {
+      const double declared = std::strtod(count.c_str(), nullptr);
+      if (declared > static_cast<double>(bytes))
+      {
+        return "its PLY header declares " + count + " " + name + " elements but the file has " +
+          std::to_string(bytes) +
+          " bytes (each element takes at least one): truncated or corrupted";
+      }
+    }
+  }
+  return "";
 }
 
 } // namespace lct_assimp

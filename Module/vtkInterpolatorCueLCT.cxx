@@ -12,7 +12,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransformInterpolatorLCT.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 vtkStandardNewMacro(vtkInterpolatorCueLCT);
@@ -136,7 +138,9 @@ double vtkInterpolatorCueLCT::KeyTime(double cueTime, double minimumT, double ma
   }
   if (this->KeyTimeMapping == KEY_TIME_MAPPING_CUE_TIME)
   {
-    return cueTime - this->StartTime;
+    // Beyond the double range (a cue from -1e308 at 1e308) the largest finite time, not Inf.
+    return std::clamp(cueTime - this->StartTime, std::numeric_limits<double>::lowest(),
+      std::numeric_limits<double>::max());
   }
   double duration = this->EndTime - this->StartTime;
   double elapsed = cueTime - this->StartTime;
@@ -146,7 +150,9 @@ double vtkInterpolatorCueLCT::KeyTime(double cueTime, double minimumT, double ma
     duration = 0.5 * this->EndTime - 0.5 * this->StartTime;
     elapsed = 0.5 * cueTime - 0.5 * this->StartTime;
   }
-  const double u = duration > 0.0 ? elapsed / duration : 0.0;
+  // Cue times outside the cue map to its ends (the interpolators clamp there anyway): beyond
+  // them u would extrapolate, and (1 - u) minimumT + u maximumT overflow to Inf or NaN.
+  const double u = duration > 0.0 ? std::clamp(elapsed / duration, 0.0, 1.0) : 0.0;
   // Exactly minimumT and maximumT at the cue's ends, and no overflow of maximumT - minimumT.
   return (1.0 - u) * minimumT + u * maximumT;
 }

@@ -88,7 +88,8 @@ public:
 
   /**
    * The key time of interpolator range [minimumT, maximumT] at cue time `cueTime`, at any
-   * magnitude (a cue from -1e308 to 1e308 maps its middle to the middle of the range). Where the
+   * magnitude (a cue from -1e308 to 1e308 maps its middle to the middle of the range); cue times
+   * outside [StartTime, EndTime] map to the range's ends with range mapping. Where the
    * cue has no valid times (cueTime, StartTime or EndTime NaN or infinite, or EndTime before
    * StartTime with range mapping) there is none: it returns minimumT, and Tick reports the cue's
    * times with an error and moves nothing.

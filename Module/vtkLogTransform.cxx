@@ -266,21 +266,52 @@ int vtkLogTransform::Add(vtkLogTransform* other)
   }
   vtkLogTransform* operands[2] = { this, other };
   const double weights[2] = { 1.0, 1.0 };
-  return vtkLogTransform::LinearCombination(2, weights, operands, this);
+  return vtkLogTransform::Combine(2, weights, operands, this, "Add");
+}
+
+//------------------------------------------------------------------------------
+bool vtkLogTransform::CoordinatesIn(vtkLogTransform* t, int parametrisation,
+  vtkLogTransform* result, const char* caller, int index, double out[12])
+{
+  Eigen::Map<lct::LogCoords> coordinates(out);
+  if (t->Parametrisation == parametrisation)
+  {
+    coordinates = t->Internal->Coordinates;
+    return true;
+  }
+  const auto c = lct::logarithm(t->Internal->Matrix, toCore(parametrisation));
+  if (!c)
+  {
+    vtkErrorWithObjectMacro(
+      result, << caller << ": transform " << index << " has no "
+              << lct::name(toCore(parametrisation)) << " coordinates: " << lct::describe(c.status)
+              << lct::adviceFor(c.status, toCore(parametrisation)) << "; result unchanged.");
+    return false;
+  }
+  coordinates = c.value;
+  return true;
 }
 
 //------------------------------------------------------------------------------
 int vtkLogTransform::LinearCombination(
   int count, const double* weights, vtkLogTransform* const* transforms, vtkLogTransform* result)
 {
+  return vtkLogTransform::Combine(count, weights, transforms, result, "LinearCombination");
+}
+
+//------------------------------------------------------------------------------
+int vtkLogTransform::Combine(int count, const double* weights, vtkLogTransform* const* transforms,
+  vtkLogTransform* result, const char* caller)
+{
   if (!result)
   {
-    vtkGenericWarningMacro(<< "vtkLogTransform::LinearCombination: null result.");
+    vtkGenericWarningMacro(<< "vtkLogTransform::" << caller << ": null result.");
     return 0;
   }
   if (count < 0 || (count > 0 && (!weights || !transforms)))
   {
-    vtkErrorWithObjectMacro(result, << "LinearCombination: invalid count or null arrays; "
+    vtkErrorWithObjectMacro(result, << caller
+                                    << ": invalid count or null arrays; "
                                        "result unchanged.");
     return 0;
   }
@@ -291,38 +322,26 @@ int vtkLogTransform::LinearCombination(
     vtkLogTransform* t = transforms[i];
     if (!t || !std::isfinite(weights[i]))
     {
-      vtkErrorWithObjectMacro(result, << "LinearCombination: transform " << i
+      vtkErrorWithObjectMacro(result, << caller << ": transform " << i
                                       << " is null or its weight is not finite; result "
                                          "unchanged.");
       return 0;
     }
-    if (t->Parametrisation == parametrisation)
+    lct::LogCoords c;
+    if (!vtkLogTransform::CoordinatesIn(t, parametrisation, result, caller, i, c.data()))
     {
-      sum += weights[i] * t->Internal->Coordinates;
-      continue;
-    }
-    const auto c = lct::logarithm(t->Internal->Matrix, toCore(parametrisation));
-    if (!c)
-    {
-      vtkErrorWithObjectMacro(
-        result, << "LinearCombination: transform " << i << " has no "
-                << lct::name(toCore(parametrisation)) << " coordinates: " << lct::describe(c.status)
-                << lct::adviceFor(c.status, toCore(parametrisation)) << "; result unchanged.");
       return 0;
     }
-    sum += weights[i] * c.value;
+    sum += weights[i] * c;
   }
   if (!sum.allFinite())
   {
-    vtkErrorWithObjectMacro(result, << "LinearCombination: the weighted sum of the coordinates "
+    vtkErrorWithObjectMacro(result, << caller
+                                    << ": the weighted sum of the coordinates "
                                        "overflows; result unchanged.");
     return 0;
   }
-  if (!result->Commit(sum.data(), parametrisation, "LinearCombination"))
-  {
-    return 0;
-  }
-  return 1;
+  return result->Commit(sum.data(), parametrisation, caller) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -343,8 +362,10 @@ int vtkLogTransform::LinearCombination(
   if (weights->GetNumberOfComponents() != 1 || weights->GetNumberOfTuples() != count)
   {
     vtkErrorWithObjectMacro(result, << "LinearCombination: " << count << " transforms but "
-                                    << weights->GetNumberOfTuples()
-                                    << " weights; result unchanged.");
+                                    << weights->GetNumberOfTuples() << " weights of "
+                                    << weights->GetNumberOfComponents()
+                                    << " component(s) (one weight of 1 component per "
+                                       "transform); result unchanged.");
     return 0;
   }
   std::vector<vtkLogTransform*> items(count);
@@ -371,9 +392,23 @@ int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double 
     vtkErrorMacro(<< "Interpolate: null transform or non-finite t; unchanged.");
     return 0;
   }
-  vtkLogTransform* operands[2] = { a, b };
-  const double weights[2] = { 1.0 - t, t };
-  return vtkLogTransform::LinearCombination(2, weights, operands, this);
+  // log a + t (log b - log a): with weights (1 - t, t) the two terms cancel for a large t (a
+  // turn interpolated with itself at t = 1e16 came out as the identity, with status 1).
+  lct::LogCoords la, lb;
+  if (!vtkLogTransform::CoordinatesIn(
+        a, this->Parametrisation, this, "Interpolate", 0, la.data()) ||
+    !vtkLogTransform::CoordinatesIn(b, this->Parametrisation, this, "Interpolate", 1, lb.data()))
+  {
+    return 0;
+  }
+  const lct::LogCoords result = la + t * (lb - la);
+  if (!result.allFinite())
+  {
+    vtkErrorMacro(<< "Interpolate: t = " << lct::formatNumber(t)
+                  << " times the coordinates' difference overflows; unchanged.");
+    return 0;
+  }
+  return this->Commit(result.data(), this->Parametrisation, "Interpolate") ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------

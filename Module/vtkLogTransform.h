@@ -134,8 +134,9 @@ public:
   ///@}
 
   /**
-   * this <- (1 - t) (.) a (+) t (.) b: linear interpolation of the stored coordinates
-   * (t outside [0, 1] extrapolates). Returns 0 (unchanged) on null input or overflow.
+   * this <- (1 - t) (.) a (+) t (.) b: linear interpolation of the stored coordinates, formed as
+   * log a + t (log b - log a) so that a large t does not cancel (t outside [0, 1] extrapolates).
+   * Returns 0 (unchanged) on null input or overflow.
    */
   int Interpolate(vtkLogTransform* a, vtkLogTransform* b, double t);
 
@@ -178,6 +179,13 @@ private:
   /// Inverse()); false, with an error naming `caller` and the state unchanged, when either is
   /// not representable.
   bool Commit(const double* coordinates, int parametrisation, const char* caller);
+  /// LinearCombination's work, its messages under `caller` (Add and Interpolate use it too).
+  static int Combine(int count, const double* weights, vtkLogTransform* const* transforms,
+    vtkLogTransform* result, const char* caller);
+  /// The 12 coordinates of `t` in `parametrisation` (converted from its matrix when it holds
+  /// another); false, with an error on `result` naming `caller` and operand `index`.
+  static bool CoordinatesIn(vtkLogTransform* t, int parametrisation, vtkLogTransform* result,
+    const char* caller, int index, double out[12]);
 
   struct State;
   State* Internal;

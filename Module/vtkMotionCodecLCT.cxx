@@ -14,6 +14,7 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkMotionCodecLCT);
 
@@ -184,12 +185,32 @@ int vtkMotionCodecLCT::DecompressOrThrow(const char* lctmFile, const char* bvhFi
     vtkErrorMacro(<< "Decompress: " << lctmFile << " cannot be read; nothing written.");
     return 0;
   }
-  std::ostringstream content;
-  content << in.rdbuf();
+  // The signature first, then at most what a valid file can hold: reading the whole stream first
+  // never returned on /dev/zero or a FIFO (1.4 GB after 10 s).
+  std::string content(4, '\0');
+  if (!in.read(&content[0], 4) || content != "LCTM")
+  {
+    vtkErrorMacro(<< "Decompress: " << lctmFile
+                  << ": not an .lctm file (no LCTM signature); nothing written.");
+    return 0;
+  }
+  constexpr std::size_t kMaxFileBytes = (std::size_t(1) << 30) + (std::size_t(1) << 20);
+  std::vector<char> chunk(std::size_t(1) << 16);
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+  {
+    content.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (content.size() > kMaxFileBytes)
+    {
+      vtkErrorMacro(<< "Decompress: " << lctmFile
+                    << " is larger than any .lctm file (a payload of at most 1 GiB, compressed); "
+                       "nothing written.");
+      return 0;
+    }
+  }
   lct::MotionMetadata metadata;
   std::string why;
   const lct::Result<lct::SkeletalAnimation> motion =
-    lct::decompressMotion(content.str(), &metadata, &why);
+    lct::decompressMotion(content, &metadata, &why);
   if (!motion)
   {
     vtkErrorMacro(<< "Decompress: " << lctmFile << ": " << why << "; nothing written.");

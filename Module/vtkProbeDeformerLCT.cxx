@@ -568,6 +568,7 @@ int vtkProbeDeformerLCT::RequestData(
   vtkNew<vtkPoints> outPoints;
   std::vector<lct::CarriedVectors> carried;
   std::vector<vtkSmartPointer<vtkDataArray>> carriedOut;
+  std::vector<vtkDataArray*> carriedIn; // the input arrays of `carried`, for messages
   output->CopyStructure(input);
   output->GetPointData()->PassData(input->GetPointData());
   output->GetCellData()->PassData(input->GetCellData());
@@ -612,6 +613,7 @@ int vtkProbeDeformerLCT::RequestData(
       c.isNormal = isNormal;
       carried.push_back(c);
       carriedOut.push_back(out);
+      carriedIn.push_back(a);
       // The attributes replace the input's copy in place (AddArray first appended an unnamed
       // one beside it: the output listed the normals twice).
       if (a == pd->GetNormals())
@@ -722,6 +724,26 @@ int vtkProbeDeformerLCT::RequestData(
                              ? "NaN or Inf"
                              : "a sum the normalisation cannot divide by (LINEAR needs a "
                                "positive sum where any weight is not 0)"));
+      }
+      else if (vtkDataArray* bad = [&]() -> vtkDataArray* {
+                 for (vtkDataArray* a : carriedIn)
+                 {
+                   Eigen::Vector3d v;
+                   a->GetTuple(failure.point, v.data());
+                   if (!v.allFinite())
+                   {
+                     return a;
+                   }
+                 }
+                 return nullptr;
+               }())
+      {
+        // A NaN in a carried normal or vector was reported as an overflow of the result.
+        Eigen::Vector3d v;
+        bad->GetTuple(failure.point, v.data());
+        vtkErrorMacro(<< "point " << failure.point << "'s vector in the array '"
+                      << (bad->GetName() ? bad->GetName() : "") << "' is " << formatVector(v)
+                      << ": a carried normal or vector must be finite.");
       }
       else
       {

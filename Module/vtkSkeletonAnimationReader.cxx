@@ -283,6 +283,12 @@ bool vtkSkeletonAnimationReader::Load()
     return false;
   }
   const std::string file = this->FileName;
+  const std::string declared = lct_assimp::declaredCountProblem(file);
+  if (!declared.empty())
+  {
+    vtkErrorMacro(<< file << ": not readable as an animation file: " << declared);
+    return false;
+  }
   Assimp::Importer importer;
   // No post-processing: the node hierarchy and the keys as the file has them.
   const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);

@@ -220,6 +220,12 @@ bool vtkSkinnedMeshReaderLCT::Load()
     return false;
   }
   const std::string file = this->FileName;
+  const std::string declared = lct_assimp::declaredCountProblem(file);
+  if (!declared.empty())
+  {
+    vtkErrorMacro(<< file << ": not readable as a mesh file: " << declared);
+    return false;
+  }
   in.Importer.reset(new Assimp::Importer);
   const aiScene* scene =
     in.Importer->ReadFile(file, aiProcess_ValidateDataStructure | aiProcess_Triangulate);

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace
@@ -222,4 +223,24 @@ TEST(InterpolatorCueLCT, RealTimeSceneDrivesTheCamera)
     const double* p = expected->GetPosition();
     EXPECT_LT((record.positions[i] - Eigen::Vector3d(p[0], p[1], p[2])).norm(), 1e-12);
   }
+}
+
+// Audit (session 28): KeyTime extrapolated cue times outside the cue, and at large magnitudes
+// returned Inf or NaN with no error (KeyTime(1e308, -1e308, -1e308) was NaN). They map to the
+// range's ends now.
+TEST(InterpolatorCueLCT, CueTimesOutsideTheCueMapToTheRangesEnds)
+{
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  cue->SetStartTime(0.0);
+  cue->SetEndTime(2.0);
+  EXPECT_EQ(cue->KeyTime(1e308, 0.5, 0.5), 0.5);
+  EXPECT_EQ(cue->KeyTime(1e308, 0.0, 1e308), 1e308);
+  EXPECT_EQ(cue->KeyTime(1e308, -1e308, -1e308), -1e308);
+  EXPECT_EQ(cue->KeyTime(3.0, -1e308, 1e308), 1e308);
+  EXPECT_EQ(cue->KeyTime(-5.0, 1.0, 4.0), 1.0);
+  EXPECT_EQ(cue->KeyTime(1.0, 1.0, 4.0), 2.5);
+  cue->SetStartTime(-1e308);
+  cue->SetEndTime(1e308);
+  cue->SetKeyTimeMappingToCueTime();
+  EXPECT_EQ(cue->KeyTime(1e308, 0.0, 1.0), std::numeric_limits<double>::max());
 }

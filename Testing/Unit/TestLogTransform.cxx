@@ -380,3 +380,20 @@ TEST(vtkLogTransform, SpreadScalesAreIllConditionedNotSingularAndHugeScalesInver
   ASSERT_EQ(tiny->Scale(-1.0), 1);
   EXPECT_NEAR(tiny->GetMatrix()->GetElement(0, 0) / 3e307, 1.0, 1e-12);
 }
+
+// Audit (session 28): Interpolate weighted the operands (1 - t, t), which cancel for a large t:
+// a 30-degree turn interpolated with itself read 28.6 degrees at t = 1e15 and the identity from
+// 1e16 on, with status 1. It is log a + t (log b - log a) now.
+TEST(vtkLogTransform, InterpolateAtALargeParameterDoesNotCancel)
+{
+  vtkNew<vtkTransform> turn;
+  turn->RotateZ(30.0);
+  vtkNew<vtkLogTransform> a, b, out;
+  ASSERT_EQ(a->SetMatrix(turn->GetMatrix()), 1);
+  ASSERT_EQ(b->SetMatrix(turn->GetMatrix()), 1);
+  for (const double t : { 0.5, 1e15, 1e16, 1e308, -1e308 })
+  {
+    ASSERT_EQ(out->Interpolate(a, b, t), 1) << t;
+    EXPECT_NEAR(out->GetMatrix()->GetElement(1, 0), 0.5, 1e-15) << t;
+  }
+}

@@ -1614,3 +1614,32 @@ TEST(ProbeDeformer, ATwistedCylinderKeepsItsRadiusExceptUnderLinearBlending)
     }
   }
 }
+
+// Audit (session 28): a NaN in a carried normal was reported as "the result is out of the range
+// of double precision (it overflows, or a stretch underflows to zero)".
+TEST(ProbeDeformer, ANaNInACarriedNormalIsNamed)
+{
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  mesh->SetPoints(points);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->InsertNextTuple3(0, 0, 1);
+  normals->InsertNextTuple3(std::nanf(""), 0, 0);
+  mesh->GetPointData()->SetNormals(normals);
+  vtkNew<vtkProbeDeformerLCT> deformer;
+  vtkNew<lct_test::ErrorCounter> errors;
+  deformer->AddObserver(vtkCommand::ErrorEvent, errors);
+  deformer->SetInputData(mesh);
+  vtkNew<vtkTransform> turn;
+  turn->RotateZ(30);
+  deformer->AddProbe(turn);
+  EXPECT_EQ(deformer->GetExecutive()->Update(), 0);
+  EXPECT_NE(errors->Last.find("point 1's vector in the array 'Normals' is (nan, 0, 0): a carried "
+                              "normal or vector must be finite"),
+    std::string::npos)
+    << errors->Last;
+}

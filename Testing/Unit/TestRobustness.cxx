@@ -687,7 +687,7 @@ TEST(Robustness, StatesWhoseInverseIsNotRepresentableAreRefusedWhereTheyAreSet)
   EXPECT_EQ(t->Scale(2.0), 0);
   EXPECT_TRUE(contains(errors->Last, "Scale: the inverse")) << errors->Last;
   EXPECT_EQ(t->Add(t), 0);
-  EXPECT_TRUE(contains(errors->Last, "LinearCombination: the inverse")) << errors->Last;
+  EXPECT_TRUE(contains(errors->Last, "Add: the inverse")) << errors->Last; // named as called
   double kept[12];
   t->GetLogCoordinates(kept);
   for (int i = 0; i < 12; ++i)

@@ -10,6 +10,7 @@
 #include "lct/MotionError.h"
 #include "lct/Skeleton.h"
 #include "vtkSkeletonAnimationReader.h"
+#include "vtkSkinnedMeshReaderLCT.h"
 
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
@@ -73,7 +74,6 @@ std::string floatBytes(std::initializer_list<float> values)
   std::memcpy(&bytes[0], values.begin(), bytes.size());
   return bytes;
 }
-
 
 /// The world position of `joint` at `frame` as the reader gives it.
 Eigen::Vector3d worldPosition(vtkSkeletonAnimationReader* reader, int joint, int frame)
@@ -672,4 +672,26 @@ TEST(SkeletonReader, WrittenNamesStayDistinct)
   }
   EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
   std::filesystem::remove(path);
+}
+
+// Audit (session 28): assimp allocates for a PLY header's declared counts before reading a
+// value: 189 bytes declaring 2e9 vertices grew either reader past several GB without returning.
+TEST(SkeletonReader, APlyDeclaringMoreElementsThanItHasBytesIsRefusedUpFront)
+{
+  const std::string file = temporaryFile("huge-count.ply",
+    "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+    "property float z\nend_header\n0 0 0\n");
+  vtkNew<vtkSkeletonAnimationReader> skeleton;
+  vtkNew<lct_test::ErrorCounter> errors;
+  skeleton->AddObserver(vtkCommand::ErrorEvent, errors);
+  skeleton->SetFileName(file.c_str());
+  EXPECT_EQ(skeleton->GetExecutive()->Update(), 0);
+  EXPECT_NE(errors->Last.find("declares 2000000000 vertex elements"), std::string::npos)
+    << errors->Last;
+  vtkNew<vtkSkinnedMeshReaderLCT> mesh;
+  mesh->AddObserver(vtkCommand::ErrorEvent, errors);
+  mesh->SetFileName(file.c_str());
+  EXPECT_EQ(mesh->GetExecutive()->Update(), 0);
+  EXPECT_NE(errors->Last.find("declares 2000000000 vertex elements"), std::string::npos)
+    << errors->Last;
 }
