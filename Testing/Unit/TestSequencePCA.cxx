@@ -175,17 +175,44 @@ TEST(SequencePCA, LowRankDataHasExactlyThatManyComponents)
   }
 }
 
+namespace
+{
+/// `count` random log coordinates of size 1.
+std::vector<LogCoords> randomLogs(RandomTransforms& random, int count)
+{
+  std::vector<LogCoords> logs;
+  for (int i = 0; i < count; ++i)
+  {
+    logs.push_back(randomCoords(random, 1.0));
+  }
+  return logs;
+}
+
+/// The squared error, in the PCA's weighted inner product, of reconstructing every frame and
+/// channel of `logs` from the first r components.
+double reconstructionError(const lct::SequencePCA& pca, const std::vector<LogCoords>& logs, int r)
+{
+  double error = 0.0;
+  for (int f = 0; f < pca.frames; ++f)
+  {
+    for (int c = 0; c < pca.channels; ++c)
+    {
+      const LogCoords off = lct::reconstructLog(pca, f, c, r).value -
+        logs[static_cast<std::size_t>(f * pca.channels + c)];
+      error += pca.weights[static_cast<std::size_t>(c)] * lct::logInnerProduct(off, off);
+    }
+  }
+  return error;
+}
+} // namespace
+
 // Eckart-Young: the squared reconstruction error with r components is the sum of the dropped
 // squared singular values, and weights move the error away from the heavy channel.
 TEST(SequencePCA, TruncationErrorIsTheDroppedVarianceAndWeightsSteerIt)
 {
   RandomTransforms random(33);
   const int frames = 40, channels = 3;
-  std::vector<LogCoords> logs;
-  for (int i = 0; i < frames * channels; ++i)
-  {
-    logs.push_back(randomCoords(random, 1.0));
-  }
+  const std::vector<LogCoords> logs = randomLogs(random, frames * channels);
   const double weights[3] = { 1.0, 50.0, 1.0 };
   for (const bool weighted : { false, true })
   {
@@ -194,16 +221,7 @@ TEST(SequencePCA, TruncationErrorIsTheDroppedVarianceAndWeightsSteerIt)
     ASSERT_EQ(pca.value.size(), 36);
     for (const int r : { 0, 1, 5, 20, 36 })
     {
-      double error = 0.0;
-      for (int f = 0; f < frames; ++f)
-      {
-        for (int c = 0; c < channels; ++c)
-        {
-          const LogCoords off = lct::reconstructLog(pca.value, f, c, r).value -
-            logs[static_cast<std::size_t>(f * channels + c)];
-          error += pca.value.weights[static_cast<std::size_t>(c)] * lct::logInnerProduct(off, off);
-        }
-      }
+      const double error = reconstructionError(pca.value, logs, r);
       const double dropped = pca.value.singularValues.tail(36 - r).squaredNorm();
       EXPECT_NEAR(error, dropped, 1e-10 * (1.0 + dropped)) << "r = " << r;
     }
@@ -230,11 +248,7 @@ TEST(SequencePCA, ExplainedFractionCountsOnlyTheKeptComponents)
 {
   RandomTransforms random(34);
   const int frames = 12, channels = 2;
-  std::vector<LogCoords> logs;
-  for (int i = 0; i < frames * channels; ++i)
-  {
-    logs.push_back(randomCoords(random, 1.0));
-  }
+  const std::vector<LogCoords> logs = randomLogs(random, frames * channels);
   const auto all = lct::sequencePCA(logs.data(), frames, channels);
   ASSERT_TRUE(all.ok());
   for (const int kept : { 1, 3 })
@@ -245,16 +259,7 @@ TEST(SequencePCA, ExplainedFractionCountsOnlyTheKeptComponents)
     for (const int r : { kept, kept + 1, 5, 100 })
     {
       EXPECT_EQ(pca.value.explainedFraction(r), all.value.explainedFraction(kept)) << r;
-      double error = 0.0;
-      for (int f = 0; f < frames; ++f)
-      {
-        for (int c = 0; c < channels; ++c)
-        {
-          const LogCoords off = lct::reconstructLog(pca.value, f, c, r).value -
-            logs[static_cast<std::size_t>(f * channels + c)];
-          error += lct::logInnerProduct(off, off);
-        }
-      }
+      const double error = reconstructionError(pca.value, logs, r); // weights 1
       const double total = all.value.singularValues.squaredNorm();
       EXPECT_NEAR(error / total, 1.0 - pca.value.explainedFraction(r), 1e-12) << r;
     }
