@@ -71,7 +71,8 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
   if (!matrix)
   {
     vtkErrorMacro(<< caller << ": the resulting transform is not representable: "
-                  << lct::describe(matrix.status) << "; unchanged.");
+                  << lct::describe(matrix.status) << lct::adviceFor(matrix.status, p)
+                  << "; unchanged.");
     return false;
   }
   // The inverse state, as Inverse() will hand it out. MatrixLog: the principal log of M^-1 is

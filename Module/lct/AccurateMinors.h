@@ -34,7 +34,7 @@ VTKLCT_EXPORT Eigen::Matrix3d accurateCofactors(const Eigen::Matrix3d& a) noexce
 /// det A to a few ulps, from the 24 exact parts of its six triple products.
 VTKLCT_EXPORT double accurateDeterminant(const Eigen::Matrix3d& a) noexcept;
 
-/// A^-1 B for a unit-size A (entries at most 1 in magnitude) with det A > 0: every entry from the
+/// A^-1 B for a unit-size A (entries at most 1 in magnitude) with det A != 0: every entry from the
 /// exact adjugate and exact products, summed like the determinant, then divided by it. The
 /// plain product A^-1 B is off by eps cond(A) relative, which for the relative steps of
 /// ill-conditioned keys moved their interpolated determinants by 1e-4.

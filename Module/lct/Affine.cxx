@@ -39,13 +39,26 @@ Eigen::Matrix4d inverseAffine(const Eigen::Matrix4d& m)
   // (for entries of 1e300 they would overflow, for 1e-300 underflow).
   const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
   const int e = unitScaleExponent(linear);
-  const Eigen::Matrix3d inverseLinear =
-    scaledByPowerOfTwo(Eigen::Matrix3d(scaledByPowerOfTwo(linear, -e).inverse()), -e);
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(linear, -e);
   // -A^-1 t at the unit size of t as well: with t near DBL_MAX the products of the row sums
   // overflow before they cancel (the inverse of a map whose own inverse is in range).
   const Eigen::Vector3d t = m.topRightCorner<3, 1>();
   const int k = unitScaleExponent(t);
   const Eigen::Vector3d unitT = scaledByPowerOfTwo(t, -k);
+  // An ill-conditioned A (the test of needsAccurateProducts): the plain cofactor inverse takes
+  // det A from products of the size of ||A||^3 that cancel, so its error grows like
+  // eps cond(A)^2; at condition 1e12 the inverse translation of a Polar map was off by 160 %.
+  // There every entry comes from exact minors (lct/AccurateMinors.h), to a few ulps.
+  const double det = unitScaleDeterminant(unit);
+  const double norm = unit.norm();
+  if (det != 0.0 && std::isfinite(det) && !(norm * norm * norm <= 1e3 * std::abs(det)))
+  {
+    return makeAffine(scaledByPowerOfTwo(Eigen::Matrix3d(accurateInverseTimes(
+                                           unit, Eigen::Matrix3d(Eigen::Matrix3d::Identity()))),
+                        -e),
+      scaledByPowerOfTwo(Eigen::Vector3d(-accurateInverseTimes(unit, unitT)), k - e));
+  }
+  const Eigen::Matrix3d inverseLinear = scaledByPowerOfTwo(Eigen::Matrix3d(unit.inverse()), -e);
   return makeAffine(
     inverseLinear, scaledByPowerOfTwo(Eigen::Vector3d(-(inverseLinear * unitT)), k));
 }

@@ -314,8 +314,14 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
   // its smallest stretch, is refused like the same matrix given to matrixLog. exp(L) is never
   // singular: a smallest singular value that rounded to 0 is an underflow, OutOfRange.
   Status range = checkRange(block.linear, l.trace());
-  range =
-    range == Status::MagnitudeOutOfRange || range == Status::Singular ? Status::OutOfRange : range;
+  if (range == Status::MagnitudeOutOfRange)
+  {
+    // A representable result beyond the parametrisation's 1e+-135 (e^320 I = 1e139 I) is
+    // refused for that reason, which Polar does not share, not as out of double's range.
+    const bool representable = block.linear.allFinite() && std::abs(l.trace()) <= 3.0 * 700.0;
+    range = representable ? Status::MagnitudeOutOfRange : Status::OutOfRange;
+  }
+  range = range == Status::Singular ? Status::OutOfRange : range;
   if (range != Status::Ok)
   {
     return R::failure(range);

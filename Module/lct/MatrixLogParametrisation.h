@@ -35,7 +35,8 @@ namespace lct
 VTKLCT_EXPORT Result<LogCoords> matrixLog(const Eigen::Matrix4d& m);
 
 /// exp of the 4x4 log matrix held by c. Fails with NonFinite (c), OutOfRange (the result
-/// overflows or underflows), IllConditioned (the result's condition number exceeds
+/// overflows or underflows), MagnitudeOutOfRange (a representable result whose eigenvalue
+/// magnitudes lie outside 1e-135 .. 1e135), IllConditioned (the result's condition number exceeds
 /// kMaxConditionNumber) or InaccurateResult (a turn wound beyond kMaxRotationWinding: an
 /// eigenvalue of the linear part with an imaginary part above 1e9).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> matrixExp(const LogCoords& c);

@@ -21,8 +21,9 @@ namespace lct
 VTKLCT_EXPORT Result<LogCoords> logarithm(
   const Eigen::Matrix4d& m, Parametrisation p, const LogCoords* reference = nullptr);
 
-/// The affine matrix of log coordinates. Fails with NonFinite, OutOfRange, IllConditioned or
-/// InaccurateResult, a turn wound beyond kMaxRotationWinding (see polarExp / matrixExp).
+/// The affine matrix of log coordinates. Fails with NonFinite, OutOfRange, IllConditioned,
+/// MagnitudeOutOfRange (MatrixLog only) or InaccurateResult, a turn wound beyond
+/// kMaxRotationWinding (see polarExp / matrixExp).
 VTKLCT_EXPORT Result<Eigen::Matrix4d> exponential(const LogCoords& c, Parametrisation p);
 
 /// For a failure in p that the other parametrisation would not have (MatrixLog: no real

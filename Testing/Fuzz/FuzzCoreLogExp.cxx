@@ -204,16 +204,19 @@ void CheckExp(const lct::LogCoords& c, lct::Parametrisation p)
   }
   if (!e)
   {
-    // lct/Parametrisation.h: NonFinite (only for non-finite c), OutOfRange, IllConditioned, or
+    // lct/Parametrisation.h: NonFinite (only for non-finite c), OutOfRange, IllConditioned,
+    // MagnitudeOutOfRange (MatrixLog: a representable result beyond its 1e+-135), or
     // InaccurateResult for a turn beyond kMaxRotationWinding (MatrixLog: that needs a skew part
     // of that size, Bendixson: |Im lambda| <= ||skew(L)||_2 = |w|).
     const bool woundTooFar = e.status == lct::Status::InaccurateResult &&
       lct::rotationPart(c).norm() > lct::kMaxRotationWinding;
-    LCT_FUZZ_CHECK(e.status == lct::Status::OutOfRange ||
-        e.status == lct::Status::IllConditioned || woundTooFar,
+    const bool beyondMatrixLogRange =
+      p == lct::Parametrisation::MatrixLog && e.status == lct::Status::MagnitudeOutOfRange;
+    LCT_FUZZ_CHECK(e.status == lct::Status::OutOfRange || e.status == lct::Status::IllConditioned ||
+        woundTooFar || beyondMatrixLogRange,
       lct::name(p) << " exp failed with " << lct::describe(e.status)
-                   << " (documented: OutOfRange, IllConditioned, or InaccurateResult for a "
-                      "turn beyond 1e9 rad)\nc = "
+                   << " (documented: OutOfRange, IllConditioned, MagnitudeOutOfRange for "
+                      "MatrixLog, or InaccurateResult for a turn beyond 1e9 rad)\nc = "
                    << Show(c.transpose()));
     // Coordinates of moderate size have a representable, well-conditioned exp: with every
     // |c_i| <= 1 the log's linear part has ||L||_F <= 5, so exp(L) has condition <= e^10.

@@ -397,3 +397,83 @@ TEST(vtkLogTransform, InterpolateAtALargeParameterDoesNotCancel)
     EXPECT_NEAR(out->GetMatrix()->GetElement(1, 0), 0.5, 1e-15) << t;
   }
 }
+
+// Audit (session 29): the Polar inverse's translation came from Eigen's cofactor inverse of the
+// map, whose determinant cancels at high condition (error ~ eps cond^2): at condition 1e12
+// GetInverse() moved the origin by 160 % of the exact -A^-1 l, at 1e10 by up to 7e-4, with
+// status 1. The oracle is -adj(A) l / det(A) of GetMatrix() in quadruple precision, where
+// a product of two doubles is exact; the translation must match it to 1e-13.
+TEST(vtkLogTransform, InverseOfAnIllConditionedMapMovesTheOriginRight)
+{
+  using Quad = __float128;
+  lct_test::RandomTransforms random(2909);
+  for (const double condition : { 1e4, 1e8, 1e10, 1e12 })
+  {
+    for (int trial = 0; trial < 20; ++trial)
+    {
+      const Eigen::Matrix3d v = random.Rotation();
+      const Eigen::Vector3d s(
+        std::sqrt(condition), random.LogUniform(0.5, 2.0), 1.0 / std::sqrt(condition));
+      Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+      m.topLeftCorner<3, 3>() = random.Rotation() * v * s.asDiagonal() * v.transpose();
+      m.topRightCorner<3, 1>() =
+        Eigen::Vector3d(random.Normal(), random.Normal(), random.Normal()) * 10.0;
+      vtkNew<vtkMatrix4x4> key;
+      toVtk(m, key);
+      vtkNew<vtkLogTransform> t;
+      ASSERT_EQ(t->SetMatrix(key), 1) << condition;
+      const Eigen::Matrix4d inverse = fromVtk(t->GetLinearInverse()->GetMatrix());
+      m = fromVtk(t->GetMatrix()); // exp(log M): the map the transform applies
+
+      Quad a[3][3], l[3], adjugate[3][3];
+      for (int i = 0; i < 3; ++i)
+      {
+        l[i] = m(i, 3);
+        for (int j = 0; j < 3; ++j)
+        {
+          a[i][j] = m(i, j);
+        }
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+          adjugate[i][j] = a[r0][c0] * a[r1][c1] - a[r0][c1] * a[r1][c0];
+        }
+      }
+      const Quad det =
+        a[0][0] * adjugate[0][0] + a[0][1] * adjugate[1][0] + a[0][2] * adjugate[2][0];
+      double error = 0.0, size = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        const Quad exact =
+          -(adjugate[i][0] * l[0] + adjugate[i][1] * l[1] + adjugate[i][2] * l[2]) / det;
+        error += std::pow(static_cast<double>(static_cast<Quad>(inverse(i, 3)) - exact), 2);
+        size += std::pow(static_cast<double>(exact), 2);
+      }
+      EXPECT_LE(std::sqrt(error / size), 1e-13) << "condition " << condition << ", trial " << trial;
+    }
+  }
+}
+
+// Audit (session 29): MatrixLog coordinates whose exp is representable but beyond the
+// parametrisation's 1e+-135 (e^320 I = 1e139 I; Polar takes it) were refused as "out of the
+// range of double precision". The message names MatrixLog's range and the way out.
+TEST(vtkLogTransform, MatrixLogCoordinatesBeyondItsRangeSayWhyAndPointToPolar)
+{
+  double c[12] = { 0, 0, 0, 0, 0, 0, 320, 320, 320, 0, 0, 0 };
+  vtkNew<vtkLogTransform> polar;
+  EXPECT_EQ(polar->SetLogCoordinates(c), 1);
+  Watched w;
+  ASSERT_EQ(w.transform->SetParametrisation(vtkLogTransform::MATRIX_LOG), 1);
+  EXPECT_EQ(w.transform->SetLogCoordinates(c), 0);
+  EXPECT_NE(w.errors->Last.find("1e-135 .. 1e135"), std::string::npos) << w.errors->Last;
+  EXPECT_NE(w.errors->Last.find("SetParametrisationToPolar()"), std::string::npos)
+    << w.errors->Last;
+  EXPECT_EQ(w.errors->Last.find("range of double precision"), std::string::npos) << w.errors->Last;
+  // A result that does overflow stays out of double's range.
+  double huge[12] = { 0, 0, 0, 0, 0, 0, 800, 800, 800, 0, 0, 0 };
+  EXPECT_EQ(w.transform->SetLogCoordinates(huge), 0);
+  EXPECT_NE(w.errors->Last.find("range of double precision"), std::string::npos) << w.errors->Last;
+}
