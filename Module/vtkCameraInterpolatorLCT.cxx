@@ -349,6 +349,7 @@ struct vtkCameraInterpolatorLCT::Internals
         [c](const lct::CameraKey& k) { return k.channels[c]; });
     }
     key.parallelProjection = this->Keys[0].Camera.parallelProjection;
+    key.horizontalViewAngle = this->Keys[0].Camera.horizontalViewAngle;
     const char* cause = "";
     const auto interpolated = lct::fromCameraKey(key, &cause);
     if (!interpolated)
@@ -605,6 +606,18 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
                   << " key cannot be mixed with "
                   << (other->Camera.parallelProjection ? "parallel" : "perspective")
                   << " keys; key rejected.");
+    return 0;
+  }
+  if (other && other->Camera.horizontalViewAngle != key.value.horizontalViewAngle)
+  {
+    // The two angles measure different things (a horizontal 60 degrees is a vertical 32 at
+    // aspect 2): blended, neither key's field of view would be reproduced.
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": a key whose view angle is "
+                  << (key.value.horizontalViewAngle ? "horizontal" : "vertical")
+                  << " (UseHorizontalViewAngle " << (key.value.horizontalViewAngle ? "on" : "off")
+                  << ") cannot be mixed with keys whose view angle is "
+                  << (other->Camera.horizontalViewAngle ? "horizontal" : "vertical")
+                  << "; key rejected.");
     return 0;
   }
   const auto parameters = lct::fromCameraKey(key.value, &why);

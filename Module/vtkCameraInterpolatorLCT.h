@@ -110,6 +110,9 @@ public:
    */
   int InterpolateCamera(double t, vtkCamera* camera);
 
+  /// Linear and Spline have vtkCameraInterpolator's values. Its 2, INTERPOLATION_TYPE_MANUAL
+  /// (per-parameter interpolators, which a matrix interpolator does not have), has no
+  /// counterpart: here 2 is BSpline, which approximates its keys. Use the named setters.
   enum InterpolationTypes
   {
     INTERPOLATION_TYPE_LINEAR = 0,

@@ -21,6 +21,7 @@ inline lct::CameraParameters FromVtk(vtkCamera* camera)
   camera->GetFocalPoint(c.focalPoint.data());
   camera->GetViewUp(c.viewUp.data());
   c.parallelProjection = camera->GetParallelProjection() != 0;
+  c.horizontalViewAngle = camera->GetUseHorizontalViewAngle() != 0;
   c.viewAngle = camera->GetViewAngle();
   c.parallelScale = camera->GetParallelScale();
   camera->GetWindowCenter(c.windowCenter.data());
@@ -44,8 +45,13 @@ inline void ToVtk(const lct::CameraParameters& c, vtkCamera* camera)
   }
   camera->SetFocalPoint(c.focalPoint.data());
   camera->SetPosition(c.position.data());
+  // The first SetFocalPoint measured its distance from the camera's PREVIOUS position, and was
+  // clamped (moved by 1e-20) where that position is the new focal point. From the new position
+  // the distance is at least kMinCameraDistance, so this one is exact.
+  camera->SetFocalPoint(c.focalPoint.data());
   camera->SetViewUp(c.viewUp.data());
   camera->SetParallelProjection(c.parallelProjection);
+  camera->SetUseHorizontalViewAngle(c.horizontalViewAngle);
   camera->SetParallelScale(c.parallelScale);
   camera->SetViewAngle(c.viewAngle);
   camera->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);

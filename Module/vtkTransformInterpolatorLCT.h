@@ -146,6 +146,9 @@ public:
   int InterpolateTransform(double t, vtkLogTransform* xform);
   ///@}
 
+  /// Linear and Spline have vtkTransformInterpolator's values. Its 2, INTERPOLATION_TYPE_MANUAL
+  /// (per-channel interpolators, which a matrix interpolator does not have), has no
+  /// counterpart: here 2 is BSpline, which approximates its keys. Use the named setters.
   enum InterpolationTypes
   {
     INTERPOLATION_TYPE_LINEAR = 0,

@@ -103,6 +103,7 @@ Result<CameraKey> toCameraKey(const CameraParameters& c, const char** why)
   key.focalFrame.block<3, 1>(0, 2) = z;
   key.focalFrame.block<3, 1>(0, 3) = c.focalPoint;
   key.parallelProjection = c.parallelProjection;
+  key.horizontalViewAngle = c.horizontalViewAngle;
   auto& ch = key.channels;
   ch[CameraKey::LogDistance] = std::log(distance);
   ch[CameraKey::LogTanHalfAngle] = std::log(std::tan(0.5 * c.viewAngle * kDegreesToRadians));
@@ -159,6 +160,7 @@ Result<CameraParameters> fromCameraKey(const CameraKey& key, const char** why)
   c.position = c.focalPoint + distance * key.focalFrame.block<3, 1>(0, 2);
   c.viewUp = key.focalFrame.block<3, 1>(0, 1);
   c.parallelProjection = key.parallelProjection;
+  c.horizontalViewAngle = key.horizontalViewAngle;
   c.parallelScale = std::exp(ch[CameraKey::LogParallelScale]);
   c.viewAngle = 2.0 * std::atan(std::exp(ch[CameraKey::LogTanHalfAngle])) / kDegreesToRadians;
   c.windowCenter = Eigen::Vector2d(ch[CameraKey::WindowCenterX], ch[CameraKey::WindowCenterY]);

@@ -42,8 +42,9 @@ struct CameraParameters
   Eigen::Vector3d focalPoint{ 0, 0, 0 };
   Eigen::Vector3d viewUp{ 0, 1, 0 };
   bool parallelProjection = false;
-  double viewAngle = 30.0;    ///< degrees, perspective
-  double parallelScale = 1.0; ///< parallel
+  bool horizontalViewAngle = false; ///< viewAngle is horizontal (vtkCamera::UseHorizontalViewAngle)
+  double viewAngle = 30.0;          ///< degrees, perspective
+  double parallelScale = 1.0;       ///< parallel
   Eigen::Vector2d windowCenter{ 0, 0 };
   Eigen::Vector3d viewShear{ 0, 0, 1 }; ///< dx/dz, dy/dz, center (vtkCamera::SetViewShear)
   Eigen::Vector2d clippingRange{ 0.01, 1000.01 };
@@ -72,6 +73,7 @@ struct CameraKey
   Eigen::Matrix4d focalFrame = Eigen::Matrix4d::Identity();
   Channels channels = Channels::Zero();
   bool parallelProjection = false;
+  bool horizontalViewAngle = false;
 };
 
 /// The largest coordinate, distance, parallel scale or clipping distance accepted: vtkCamera

@@ -905,3 +905,67 @@ TEST(CameraInterpolatorLCT, OrbitThatStopsDoesNotOvershootWhileTheFocalPointMove
     }
   }
 }
+
+// Audit (session 29): ToVtk set the focal point while the output camera still had its previous
+// position; where that position was the new focal point, vtkCamera clamped the distance to 1e-20
+// and moved the focal point, and the later SetPosition never moved it back. A key came back with
+// its focal point 1e-20 off (10 % of its view distance at 1e-19), with status 1, depending on
+// what the output camera had shown before.
+TEST(CameraInterpolatorLCT, KeysComeBackWhateverTheOutputCameraShowedBefore)
+{
+  for (const double scale : { 1e-19, 1.0 })
+  {
+    vtkNew<vtkCameraInterpolatorLCT> path;
+    vtkNew<vtkCamera> k0, k1;
+    k0->SetPosition(0, 0, scale);
+    k0->SetFocalPoint(0, 0, 0);
+    k1->SetPosition(scale, 0, 0);
+    k1->SetFocalPoint(0, 0, 0);
+    path->AddCamera(0.0, k0);
+    path->AddCamera(1.0, k1);
+    vtkNew<vtkCamera> out;
+    out->SetPosition(0, 0, 0); // where the keys' focal point is
+    out->SetFocalPoint(0, 0, -1);
+    ASSERT_EQ(path->InterpolateCamera(0.0, out), 1) << scale;
+    const double* f = out->GetFocalPoint();
+    EXPECT_EQ(f[0], 0.0) << scale;
+    EXPECT_EQ(f[1], 0.0) << scale;
+    EXPECT_EQ(f[2], 0.0) << scale;
+    EXPECT_NEAR(out->GetPosition()[2], scale, 1e-14 * scale); // log-distance round trip
+  }
+}
+
+// Audit (session 29): UseHorizontalViewAngle was not carried: a key with a horizontal 60-degree
+// angle came back vertical (its field of view doubled at aspect 2), with status 1, and keys
+// mixing horizontal and vertical angles were blended as if they measured the same thing.
+TEST(CameraInterpolatorLCT, HorizontalViewAnglesAreReproducedAndNotMixedWithVerticalOnes)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<ErrorCounter> errors;
+  path->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> k0, k1, vertical;
+  k0->SetPosition(0, 0, 5);
+  k0->SetUseHorizontalViewAngle(1);
+  k0->SetViewAngle(60);
+  k1->SetPosition(5, 0, 0);
+  k1->SetUseHorizontalViewAngle(1);
+  k1->SetViewAngle(40);
+  ASSERT_EQ(path->AddCamera(0.0, k0), 1);
+  ASSERT_EQ(path->AddCamera(1.0, k1), 1);
+  vtkNew<vtkCamera> out;
+  for (const double t : { 0.0, 0.5, 1.0 })
+  {
+    ASSERT_EQ(path->InterpolateCamera(t, out), 1);
+    EXPECT_EQ(out->GetUseHorizontalViewAngle(), 1) << t;
+  }
+  ASSERT_EQ(path->InterpolateCamera(0.0, out), 1);
+  EXPECT_NEAR(out->GetProjectionTransformMatrix(2.0, -1, 1)->GetElement(1, 1),
+    k0->GetProjectionTransformMatrix(2.0, -1, 1)->GetElement(1, 1), 1e-12);
+  vertical->SetPosition(-5, 0, 0);
+  vertical->SetViewAngle(60);
+  EXPECT_EQ(path->AddCamera(2.0, vertical), 0);
+  EXPECT_NE(errors->Last.find("cannot be mixed with keys whose view angle is horizontal"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_EQ(path->GetNumberOfCameras(), 2);
+}
