@@ -157,6 +157,26 @@ double vtkInterpolatorCueLCT::KeyTime(double cueTime, double minimumT, double ma
   return (1.0 - u) * minimumT + u * maximumT;
 }
 
+namespace
+{
+/// vtkRenderer::ResetCameraClippingRange fits the renderer's ACTIVE camera, which need not be
+/// the camera the cue drives: that one is made active for the fit (VTK's own rule, not a copy of
+/// it), and the renderer's own camera, if it had one, is put back.
+void RefitClippingRange(vtkRenderer* renderer, vtkCamera* camera)
+{
+  vtkSmartPointer<vtkCamera> active =
+    renderer->IsActiveCameraCreated() ? renderer->GetActiveCamera() : nullptr;
+  if (active == camera)
+  {
+    renderer->ResetCameraClippingRange();
+    return;
+  }
+  renderer->SetActiveCamera(camera);
+  renderer->ResetCameraClippingRange();
+  renderer->SetActiveCamera(active);
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, double clocktime)
 {
@@ -170,20 +190,7 @@ void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, d
     this->Superclass::TickInternal(currenttime, deltatime, clocktime);
     return;
   }
-  if (in.Camera && in.CameraPath)
-  {
-    const double t =
-      this->KeyTime(currenttime, in.CameraPath->GetMinimumT(), in.CameraPath->GetMaximumT());
-    if (!in.CameraPath->InterpolateCamera(t, in.Camera))
-    {
-      vtkErrorMacro(<< "TickInternal: the camera path failed at key time " << t
-                    << "; camera unchanged.");
-    }
-    else if (in.Renderer)
-    {
-      in.Renderer->ResetCameraClippingRange();
-    }
-  }
+  // Props first: the camera's clipping range is refitted to where this tick puts them.
   vtkNew<vtkMatrix4x4> matrix;
   for (auto& [prop, path] : in.Props)
   {
@@ -197,6 +204,20 @@ void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, d
     else
     {
       vtkErrorMacro(<< "TickInternal: a prop path failed at key time " << t << "; prop unchanged.");
+    }
+  }
+  if (in.Camera && in.CameraPath)
+  {
+    const double t =
+      this->KeyTime(currenttime, in.CameraPath->GetMinimumT(), in.CameraPath->GetMaximumT());
+    if (!in.CameraPath->InterpolateCamera(t, in.Camera))
+    {
+      vtkErrorMacro(<< "TickInternal: the camera path failed at key time " << t
+                    << "; camera unchanged.");
+    }
+    else if (in.Renderer)
+    {
+      RefitClippingRange(in.Renderer, in.Camera);
     }
   }
   this->Superclass::TickInternal(currenttime, deltatime, clocktime);

@@ -61,8 +61,10 @@ public:
 
   ///@{
   /**
-   * When set, its camera clipping range is refitted to the visible props after the camera moves
-   * (vtkRenderer::ResetCameraClippingRange). Default null: the interpolated range is kept.
+   * When set, the clipping range of the cue's camera is refitted to the renderer's visible props
+   * after the props and then the camera move (vtkRenderer::ResetCameraClippingRange; when the
+   * cue's camera is not the renderer's active camera it is made active for the fit, and the
+   * active camera put back). Default null: the interpolated range is kept.
    */
   void SetRenderer(vtkRenderer* renderer);
   vtkRenderer* GetRenderer();

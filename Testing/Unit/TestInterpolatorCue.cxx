@@ -9,8 +9,11 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraInterpolatorLCT.h"
+#include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
 #include "vtkTransform.h"
 #include "vtkTransformInterpolatorLCT.h"
 
@@ -30,6 +33,21 @@ struct TickRecord
   vtkCamera* camera = nullptr;
   vtkActor* actor = nullptr;
 };
+
+/// A prop's geometry without a rendering backend: a unit box about the origin.
+class UnitBoxMapper : public vtkMapper
+{
+public:
+  static UnitBoxMapper* New();
+  vtkTypeMacro(UnitBoxMapper, vtkMapper);
+  void Render(vtkRenderer*, vtkActor*) override {}
+  double* GetBounds() override { return this->Box; }
+  using vtkMapper::GetBounds;
+
+private:
+  double Box[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+};
+vtkStandardNewMacro(UnitBoxMapper);
 
 void onTick(vtkObject* caller, unsigned long, void* clientData, void*)
 {
@@ -243,4 +261,80 @@ TEST(InterpolatorCueLCT, CueTimesOutsideTheCueMapToTheRangesEnds)
   cue->SetEndTime(1e308);
   cue->SetKeyTimeMappingToCueTime();
   EXPECT_EQ(cue->KeyTime(1e308, 0.0, 1.0), std::numeric_limits<double>::max());
+}
+
+// Audit (session 29): the cue refitted the clipping range right after moving the camera and
+// before moving the props, so a prop moving away was clipped out of the frame (at t = 0.5 the
+// range was [9.2, 11.7] with the prop 60 away); and the refit acted on the renderer's active
+// camera even when the cue drove another one, which kept its stale range.
+TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCamera)
+{
+  vtkNew<vtkCameraInterpolatorLCT> cameraPath;
+  for (const double z : { 10.0, 10.5 })
+  {
+    vtkNew<vtkCamera> key;
+    key->SetPosition(0, 0, z);
+    ASSERT_EQ(cameraPath->AddCamera(z == 10.0 ? 0.0 : 1.0, key), 1);
+  }
+  vtkNew<vtkTransformInterpolatorLCT> propPath;
+  vtkNew<vtkTransform> near, far;
+  far->Translate(0, 0, -100);
+  ASSERT_EQ(propPath->AddTransform(0.0, near), 1);
+  ASSERT_EQ(propPath->AddTransform(1.0, far), 1);
+  for (const bool activeCamera : { true, false })
+  {
+    vtkNew<UnitBoxMapper> mapper;
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddActor(actor);
+    vtkNew<vtkCamera> other;
+    vtkCamera* camera = renderer->GetActiveCamera();
+    if (!activeCamera)
+    {
+      camera = other;
+    }
+    const double activeRange[2] = { renderer->GetActiveCamera()->GetClippingRange()[0],
+      renderer->GetActiveCamera()->GetClippingRange()[1] };
+    vtkNew<vtkInterpolatorCueLCT> cue;
+    cue->SetStartTime(0.0);
+    cue->SetEndTime(1.0);
+    cue->SetCamera(camera);
+    cue->SetCameraInterpolator(cameraPath);
+    cue->SetRenderer(renderer);
+    ASSERT_EQ(cue->AddProp(actor, propPath), 1);
+    vtkNew<vtkAnimationScene> scene;
+    scene->SetModeToSequence();
+    scene->SetFrameRate(4);
+    scene->SetStartTime(0.0);
+    scene->SetEndTime(1.0);
+    scene->AddCue(cue);
+    int ticks = 0;
+    vtkNew<vtkCallbackCommand> check;
+    struct Context
+    {
+      vtkCamera* camera;
+      vtkActor* actor;
+      int* ticks;
+    } context{ camera, actor, &ticks };
+    check->SetClientData(&context);
+    check->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+      auto* c = static_cast<Context*>(data);
+      const double* centre = c->actor->GetCenter();
+      const double depth = c->camera->GetPosition()[2] - centre[2];
+      const double* range = c->camera->GetClippingRange();
+      EXPECT_LE(range[0], depth - 0.5);
+      EXPECT_GE(range[1], depth + 0.5);
+      ++*c->ticks;
+    });
+    cue->AddObserver(vtkCommand::AnimationCueTickEvent, check);
+    scene->Play();
+    EXPECT_GE(ticks, 4) << activeCamera;
+    EXPECT_EQ(renderer->GetActiveCamera() == camera, activeCamera);
+    if (!activeCamera)
+    {
+      EXPECT_EQ(renderer->GetActiveCamera()->GetClippingRange()[0], activeRange[0]);
+      EXPECT_EQ(renderer->GetActiveCamera()->GetClippingRange()[1], activeRange[1]);
+    }
+  }
 }
