@@ -444,9 +444,14 @@ int vtkProbeDeformerLCT::RequestData(
   if (std::all_of(relative.begin(), relative.end(),
         [](const Eigen::Matrix4d& a) { return a.topLeftCorner<3, 3>().norm() < kMinimumShrink; }))
   {
+    // ||L||_F scaled by the largest entry: norm()'s sum of squares underflows to 0 below ~1e-154
+    // (a scale of 1e-200 was reported as "at most 0"; the test above only compares it with 1e-8).
+    // Not Eigen's stableNorm(), which asserts on fixed-size matrices in Eigen 3.4.0.
+    const Eigen::Matrix3d linear = relative[0].topLeftCorner<3, 3>();
+    const double largest = linear.cwiseAbs().maxCoeff();
     vtkErrorMacro(<< "every probe shrinks by more than " << lct::formatNumber(1.0 / kMinimumShrink)
                   << " (probe 0: largest stretch at most "
-                  << lct::formatNumber(relative[0].topLeftCorner<3, 3>().norm())
+                  << lct::formatNumber(largest > 0.0 ? largest * (linear / largest).norm() : 0.0)
                   << "): the deformed points would keep fewer than 8 digits of their own size "
                      "(they move as p + (A - I) p, with round-off on the input's scale); "
                      "deform with probes nearer the identity, then scale the result.");

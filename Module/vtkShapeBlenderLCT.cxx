@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -483,6 +484,25 @@ int vtkShapeBlenderLCT::RequestData(
     return fail();
   }
 
+  // Float points are blended in double, where the overflow checks hold: a point beyond float's
+  // range was narrowed to Inf and reported as a success.
+  const bool floatPoints = input->GetPoints()->GetDataType() == VTK_FLOAT;
+  if (floatPoints)
+  {
+    const double floatMax = static_cast<double>(std::numeric_limits<float>::max());
+    for (std::size_t v = 0; v < blended.size(); ++v)
+    {
+      if (!(blended[v].cwiseAbs().maxCoeff() <= floatMax))
+      {
+        vtkErrorMacro(<< "the blended point " << v << " is " << formatPoint(blended[v])
+                      << ": out of the range of float, the rest mesh's point type (weights too "
+                         "far beyond the targets, or give the rest mesh double points); output "
+                         "unchanged.");
+        return fail();
+      }
+    }
+  }
+
   // The output: the rest mesh's topology and data (without normals), the blended points.
   output->CopyStructure(input);
   output->GetPointData()->CopyNormalsOff();
@@ -490,8 +510,7 @@ int vtkShapeBlenderLCT::RequestData(
   output->GetCellData()->CopyNormalsOff();
   output->GetCellData()->PassData(input->GetCellData());
   vtkNew<vtkPoints> outPoints;
-  const int type = input->GetPoints()->GetDataType();
-  outPoints->SetDataType(type == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
+  outPoints->SetDataType(floatPoints ? VTK_FLOAT : VTK_DOUBLE);
   outPoints->SetNumberOfPoints(static_cast<vtkIdType>(blended.size()));
   for (std::size_t v = 0; v < blended.size(); ++v)
   {

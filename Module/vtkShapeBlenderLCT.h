@@ -41,8 +41,9 @@
  * mesh and every target), NaN/Inf points, degenerate (zero-area) triangles in the rest mesh or a
  * target, triangles too large or too small for double's range (beyond 2^+-480, ~1e+-144: areas
  * would overflow or underflow), a target with another point count or other triangles (count or
- * connectivity), NaN/Inf weights, a blend whose maps overflow (an extrapolation too far). SetWeight
- * / GetWeight with an index out of range and AddTarget(nullptr) are reported at once.
+ * connectivity), NaN/Inf weights, a blend whose maps overflow (an extrapolation too far), float
+ * points whose blend leaves float's range. SetWeight / GetWeight with an index out of range and
+ * AddTarget(nullptr) are reported at once.
  *
  * @warning Targets are read when the filter executes; they are not pipeline inputs (a target
  * produced by a filter must be updated first). The filter holds a reference to each target.

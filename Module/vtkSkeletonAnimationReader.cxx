@@ -26,11 +26,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -105,6 +107,7 @@ struct BVHText
   std::vector<Joint> joints; ///< every ROOT and JOINT in file order: assimp's channel order
   long channels = 0;         ///< values per frame (the sum of the CHANNELS counts)
   std::string declared;      ///< the count the Frames: line declares, as written
+  std::string frameTime;     ///< the Frame Time: line's value, as written (empty: none)
   long rows = 0;             ///< data rows (non-blank lines) after Frame Time:
   long badLine = 0;          ///< the first data row without `channels` values (0: none)
   long badValues = 0;        ///< and its number of values
@@ -204,6 +207,7 @@ bool scanBVH(const std::string& file, BVHText& text)
   }
   bool timeLine = false;
   text.declared.clear();
+  text.frameTime.clear();
   while (!timeLine && std::getline(in, line))
   {
     ++number;
@@ -212,7 +216,12 @@ bool scanBVH(const std::string& file, BVHText& text)
     {
       std::istringstream(line.substr(frames + 7)) >> text.declared;
     }
-    timeLine = line.find("Frame Time:") != std::string::npos;
+    const std::size_t time = line.find("Frame Time:");
+    if (time != std::string::npos)
+    {
+      std::istringstream(line.substr(time + 11)) >> text.frameTime;
+      timeLine = true;
+    }
   }
   if (!timeLine || text.declared.empty())
   {
@@ -241,6 +250,21 @@ bool scanBVH(const std::string& file, BVHText& text)
     }
   }
   return true;
+}
+
+/// Whether a BVH Frame Time, as written, is a positive number outside float's normal range:
+/// assimp parses it as float32 and reads 0 or Inf (or a subnormal that keeps few digits), then
+/// 1 / that frames per second.
+bool isBeyondFloat(const std::string& text)
+{
+  errno = 0;
+  const double value = std::strtod(text.c_str(), nullptr);
+  // 1e-400 underflows double too: strtod gives 0 with ERANGE.
+  const bool positive =
+    value > 0.0 || (value == 0.0 && errno == ERANGE && !text.empty() && text[0] != '-');
+  return positive &&
+    !(value >= static_cast<double>(std::numeric_limits<float>::min()) &&
+      value <= static_cast<double>(std::numeric_limits<float>::max()));
 }
 } // namespace
 
@@ -344,6 +368,16 @@ bool vtkSkeletonAnimationReader::Load()
   std::transform(extension.begin(), extension.end(), extension.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   const bool statesFrameTime = extension == ".bvh";
+  BVHText bvh;
+  const bool isBVH = scanBVH(file, bvh);
+  if (isBVH && isBeyondFloat(bvh.frameTime))
+  {
+    vtkErrorMacro(<< file << ": its Frame Time, " << bvh.frameTime
+                  << ", is outside float's normal range (about 1.2e-38 to 3.4e+38 s), in which "
+                     "assimp reads it (as 0, Inf or a subnormal that keeps few digits); nothing "
+                     "read.");
+    return false;
+  }
   if (statesFrameTime &&
     !(animation.mTicksPerSecond > 0.0 && std::isfinite(animation.mTicksPerSecond)))
   {
@@ -374,8 +408,6 @@ bool vtkSkeletonAnimationReader::Load()
   // and a joint with position channels among another number of channels loses them (refused:
   // its motion cannot be recovered from what assimp read).
   std::set<const aiNodeAnim*> addOffset;
-  BVHText bvh;
-  const bool isBVH = scanBVH(file, bvh);
   if (isBVH)
   {
     if (bvh.joints.size() != animation.mNumChannels)
@@ -419,6 +451,17 @@ bool vtkSkeletonAnimationReader::Load()
     // above 0). Rows after them are not read (some exporters write one more: Boxing_Toes) and
     // said so; a count the frames read do not match (Frames: 0 and a row, which assimp reads as
     // one frame) is an error rather than an animation the header denies.
+    if (bvh.rows == 0)
+    {
+      // assimp reads a MOTION section without rows as one frame too: compared with that frame,
+      // a Frames: 0 line was blamed for the motion the file lacks.
+      vtkErrorMacro(<< file << ": its MOTION section holds no data rows (its Frames: line says "
+                    << bvh.declared
+                    << "): the file has no motion data, and an animation needs at least one "
+                       "frame; nothing read.");
+      in = Internals();
+      return false;
+    }
     if (std::strtod(bvh.declared.c_str(), nullptr) != static_cast<double>(frames))
     {
       vtkErrorMacro(<< file << ": its Frames: line says " << bvh.declared
@@ -541,12 +584,20 @@ bool vtkSkeletonAnimationReader::Load()
 int vtkSkeletonAnimationReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  vtkInformation* info = outputVector->GetInformationObject(0);
   if (!this->Load())
   {
+    // RequestData does not run after this failure: the previous file's time steps and skeleton
+    // stayed, as if still read.
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    if (vtkPolyData* output = vtkPolyData::GetData(info))
+    {
+      output->Initialize();
+    }
     return 0;
   }
   const std::vector<double>& times = this->Internal->Times;
-  vtkInformation* info = outputVector->GetInformationObject(0);
   info->Set(
     vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
   const double range[2] = { times.front(), times.back() };

@@ -14,7 +14,8 @@
  * animation's duration reach beyond them, the frames cover that whole span, evenly spaced at that
  * channel's rate or finer. For BVH they are the file's data rows, at its Frame Time: as many as
  * its Frames: line declares (rows after them are not read, with a warning; a count the rows read
- * do not match, such as Frames: 0 before a row, is an error). A BVH joint's translation is its
+ * do not match, such as Frames: 0 before a row, is an error, and so is a MOTION section without
+ * rows). A BVH joint's translation is its
  * OFFSET plus its position channels (the BVH convention; assimp 5.2 replaces the OFFSET, which
  * the reader adds back). What assimp would read other than the text says is an error naming the
  * line or joint: a data row without one value per channel (assimp reads values regardless of
@@ -32,11 +33,12 @@
  * GetNumberOfJoints, GetJointName, GetJointParent, IsEndSite, GetNumberOfFrames, GetFrameTime,
  * GetLocalTransform(joint, frame) and GetWorldTransform(joint, frame).
  *
- * Known limits of assimp 5.2: values are parsed as float32, and a BVH file's Euler channel
- * order survives only inside the rotation quaternions. Unreadable, empty or malformed files, a
- * file without animation, non-finite values, and more than 10000 joints or 3 10^7 transforms
- * (frames x joints) are reported with a vtkErrorMacro; the request fails and no output is
- * produced.
+ * Known limits of assimp 5.2: values are parsed as float32 (a BVH Frame Time outside float's
+ * normal range is an error), and a BVH file's Euler channel order survives only inside the
+ * rotation quaternions. Unreadable, empty or malformed files, a file without animation,
+ * non-finite values, and more than 10000 joints or 3 10^7 transforms (frames x joints) are
+ * reported with a vtkErrorMacro; the request fails, the output is emptied and TIME_STEPS and
+ * TIME_RANGE are removed (a file read before leaves nothing behind).
  *
  * Thread safety: like any VTK algorithm, one reader must not be updated from two threads at
  * once; the Get methods only read, and may run concurrently once an update has returned.

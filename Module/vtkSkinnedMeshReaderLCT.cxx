@@ -4,6 +4,7 @@
 
 #include "lct/Affine.h"
 #include "lct/Conditioning.h"
+#include "lct/Format.h"
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
@@ -127,8 +128,6 @@ struct vtkSkinnedMeshReaderLCT::Internals
   /// Node world transforms at CachedTime.
   double CachedTime = -1.0;
   std::vector<Eigen::Matrix4d> CachedWorld;
-  /// The matrices handed to a deformer by ConfigureDeformer.
-  std::vector<vtkSmartPointer<vtkMatrix4x4>> Current, RestMatrices;
 
   /// World transforms of every node with the animation sampled at `seconds` (or the nodes'
   /// own transforms, the bind pose, for a negative time).
@@ -546,10 +545,15 @@ int vtkSkinnedMeshReaderLCT::GetBoneRestMatrix(int bone, vtkMatrix4x4* result)
   {
     return 0;
   }
-  if (!result || bone < 0 || bone >= this->GetNumberOfBones())
+  if (!result)
+  {
+    vtkErrorMacro(<< "GetBoneRestMatrix: the result matrix is null; nothing written.");
+    return 0;
+  }
+  if (bone < 0 || bone >= this->GetNumberOfBones())
   {
     vtkErrorMacro(<< "GetBoneRestMatrix: bone " << bone << " is outside [0, "
-                  << this->GetNumberOfBones() << ") or the result is null");
+                  << this->GetNumberOfBones() << "); result unchanged.");
     return 0;
   }
   toVtk(this->Internal->Bones[bone].Rest, result);
@@ -562,10 +566,21 @@ int vtkSkinnedMeshReaderLCT::GetBoneMatrix(int bone, double time, vtkMatrix4x4* 
   {
     return 0;
   }
-  if (!result || bone < 0 || bone >= this->GetNumberOfBones() || !std::isfinite(time))
+  if (!result)
+  {
+    vtkErrorMacro(<< "GetBoneMatrix: the result matrix is null; nothing written.");
+    return 0;
+  }
+  if (bone < 0 || bone >= this->GetNumberOfBones())
   {
     vtkErrorMacro(<< "GetBoneMatrix: bone " << bone << " is outside [0, "
-                  << this->GetNumberOfBones() << "), the time is not finite or the result is null");
+                  << this->GetNumberOfBones() << "); result unchanged.");
+    return 0;
+  }
+  if (!std::isfinite(time))
+  {
+    vtkErrorMacro(<< "GetBoneMatrix: the time " << lct::formatNumber(time)
+                  << " is not finite; result unchanged.");
     return 0;
   }
   Internals& in = *this->Internal;
@@ -577,43 +592,42 @@ int vtkSkinnedMeshReaderLCT::GetBoneMatrix(int bone, double time, vtkMatrix4x4* 
 
 int vtkSkinnedMeshReaderLCT::ConfigureDeformer(vtkProbeDeformerLCT* deformer, double time)
 {
-  if (!deformer || !this->Ready("ConfigureDeformer") || !std::isfinite(time))
+  if (!deformer)
   {
-    vtkErrorMacro(<< "ConfigureDeformer: "
-                  << (deformer ? "the time is not finite" : "null deformer"));
+    vtkErrorMacro(<< "ConfigureDeformer: the deformer is null; nothing configured.");
     return 0;
   }
-  Internals& in = *this->Internal;
+  if (!this->Ready("ConfigureDeformer"))
+  {
+    return 0;
+  }
+  if (!std::isfinite(time))
+  {
+    vtkErrorMacro(<< "ConfigureDeformer: the time " << lct::formatNumber(time)
+                  << " is not finite; the deformer is unchanged.");
+    return 0;
+  }
   const int n = this->GetNumberOfBones();
-  if (static_cast<int>(in.Current.size()) != n)
-  {
-    in.Current.clear();
-    in.RestMatrices.clear();
-    for (int b = 0; b < n; ++b)
-    {
-      in.Current.push_back(vtkSmartPointer<vtkMatrix4x4>::New());
-      in.RestMatrices.push_back(vtkSmartPointer<vtkMatrix4x4>::New());
-      this->GetBoneRestMatrix(b, in.RestMatrices.back());
-    }
-  }
-  bool same = deformer->GetNumberOfProbes() == n;
-  for (int b = 0; b < n; ++b)
-  {
-    this->GetBoneMatrix(b, time, in.Current[b]);
-  }
+  const bool same = deformer->GetNumberOfProbes() == n;
   if (!same)
   {
     deformer->RemoveAllProbes();
-    for (int b = 0; b < n; ++b)
-    {
-      deformer->AddProbe(in.Current[b], in.RestMatrices[b]);
-    }
   }
-  else
+  for (int b = 0; b < n; ++b)
   {
-    for (int b = 0; b < n; ++b)
+    // Matrices of this deformer's own: one set kept by the reader and handed to every deformer
+    // made configuring a second deformer at another time move the first one too.
+    vtkNew<vtkMatrix4x4> current;
+    vtkNew<vtkMatrix4x4> rest;
+    this->GetBoneMatrix(b, time, current);
+    this->GetBoneRestMatrix(b, rest);
+    if (same)
     {
-      deformer->SetProbe(b, in.Current[b], in.RestMatrices[b]);
+      deformer->SetProbe(b, current, rest);
+    }
+    else
+    {
+      deformer->AddProbe(current, rest);
     }
   }
   deformer->SetWeightModeToPointData();

@@ -83,7 +83,8 @@ public:
   ///@{
   /**
    * A bone's rest matrix and its matrix at `time` (clamped to the animation's range), both world
-   * coordinates. Return 1, or 0 with an error for an index out of range or before an update.
+   * coordinates. Return 1, or 0 with an error for an index out of range, a null result, a time
+   * that is not finite or before an update.
    */
   int GetBoneRestMatrix(int bone, vtkMatrix4x4* result);
   int GetBoneMatrix(int bone, double time, vtkMatrix4x4* result);
@@ -91,7 +92,9 @@ public:
 
   /**
    * Give `deformer` one probe per bone at `time` and this reader's weight arrays (POINT_DATA,
-   * linear normalisation). Returns 1, or 0 with an error (null deformer, before an update).
+   * linear normalisation). The probe matrices are the deformer's own: configuring another
+   * deformer at another time leaves this one as it is. Returns 1, or 0 with an error (null
+   * deformer, before an update, a time that is not finite).
    */
   int ConfigureDeformer(vtkProbeDeformerLCT* deformer, double time);
 

@@ -32,6 +32,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace
@@ -1576,6 +1578,38 @@ TEST(ProbeDeformer, AShrinkBeyondEightDigitsIsRefusedNotRoundedAway)
         expectRefused(f, "every probe shrinks", 0);
       }
     }
+  }
+}
+
+TEST(ProbeDeformer, TheShrinkMessageBoundsTheStretchEvenWhereItsSquareUnderflows)
+{
+  // Audit: Scale(1e-200) was refused with "largest stretch at most 0": the bound printed was
+  // ||L||_F, whose sum of squares underflows. Now it is sqrt(3) s, at least s and not 0.
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(1, 2, 3);
+  mesh->SetPoints(points);
+  for (const double scale : { 1e-9, 1e-200, 1e-300 })
+  {
+    vtkNew<vtkProbeDeformerLCT> f;
+    vtkNew<vtkMatrix4x4> shrink;
+    for (int k = 0; k < 3; ++k)
+    {
+      shrink->SetElement(k, k, scale);
+    }
+    ASSERT_GE(f->AddProbe(shrink), 0);
+    f->SetInputData(mesh);
+    vtkNew<lct_test::ErrorCounter> errors;
+    f->AddObserver(vtkCommand::ErrorEvent, errors);
+    vtkNew<lct_test::ErrorCounter> executiveErrors;
+    f->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+    EXPECT_EQ(f->GetExecutive()->Update(), 0) << scale;
+    const std::string key = "largest stretch at most ";
+    const std::size_t at = errors->Last.find(key);
+    ASSERT_NE(at, std::string::npos) << errors->Last;
+    const double bound = std::strtod(errors->Last.c_str() + at + key.size(), nullptr);
+    EXPECT_GE(bound, scale) << errors->Last;
+    EXPECT_LE(bound, 1.7320508075688774 * scale * (1.0 + 1e-12)) << errors->Last;
   }
 }
 

@@ -842,6 +842,73 @@ TEST(ShapeBlendBadInput, ExtrapolationSoFarThatTheMapsOverflow)
   f.expectFailure("cannot be formed");
 }
 
+TEST(ShapeBlendBadInput, FloatPointsBlendedBeyondFloatsRangeAreAnErrorNotInf)
+{
+  // A 3 x 3 grid of float points, spacing s; the target scales the rest by 3, so weight w scales
+  // it by 3^w: at w = 20 every coordinate but the centre's is beyond FLT_MAX (but not DBL_MAX).
+  const auto grid = [](double s, int type) {
+    std::vector<Eigen::Vector3d> points;
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        points.emplace_back(i * s, j * s, 0.0);
+      }
+    }
+    std::vector<lct::Triangle> triangles;
+    for (int j = 0; j < 2; ++j)
+    {
+      for (int i = 0; i < 2; ++i)
+      {
+        const std::int64_t a = 3 * j + i;
+        triangles.push_back({ a, a + 1, a + 4 });
+        triangles.push_back({ a, a + 4, a + 3 });
+      }
+    }
+    vtkSmartPointer<vtkPolyData> pd = lct_test::toPolyData(points, triangles);
+    vtkNew<vtkPoints> typed;
+    typed->SetDataType(type);
+    typed->DeepCopy(pd->GetPoints());
+    pd->SetPoints(typed);
+    return pd;
+  };
+  vtkNew<vtkShapeBlenderLCT> blender;
+  vtkNew<lct_test::ErrorCounter> errors;
+  blender->AddObserver(vtkCommand::ErrorEvent, errors);
+  blender->SetInputData(grid(1e37, VTK_FLOAT));
+  blender->AddTarget(grid(3e37, VTK_FLOAT));
+  blender->SetWeight(0, 1.0);
+  ASSERT_EQ(blender->GetExecutive()->Update(), 1);
+  ASSERT_EQ(blender->GetOutput()->GetPoints()->GetDataType(), VTK_FLOAT);
+  const std::vector<Eigen::Vector3d> good = lct_test::pointsOf(blender->GetOutput());
+  EXPECT_EQ(errors->Count, 0);
+
+  blender->SetWeight(0, 20.0);
+  EXPECT_EQ(blender->GetExecutive()->Update(), 0);
+  ASSERT_GT(errors->Count, 0);
+  EXPECT_NE(errors->Last.find("point 0 is"), std::string::npos) << errors->Last;
+  EXPECT_NE(errors->Last.find("out of the range of float"), std::string::npos) << errors->Last;
+  const std::vector<Eigen::Vector3d> kept = lct_test::pointsOf(blender->GetOutput());
+  EXPECT_EQ(maxDistance(kept, good), 0.0);
+  for (const Eigen::Vector3d& p : kept)
+  {
+    EXPECT_TRUE(p.allFinite());
+  }
+
+  // The same blend of double points fits double.
+  errors->Count = 0;
+  blender->SetInputData(grid(1e37, VTK_DOUBLE));
+  blender->RemoveAllTargets();
+  blender->AddTarget(grid(3e37, VTK_DOUBLE));
+  blender->SetWeight(0, 20.0);
+  EXPECT_EQ(blender->GetExecutive()->Update(), 1);
+  EXPECT_EQ(errors->Count, 0);
+  for (const Eigen::Vector3d& p : lct_test::pointsOf(blender->GetOutput()))
+  {
+    EXPECT_TRUE(p.allFinite());
+  }
+}
+
 TEST(ShapeBlendBadInput, RecoversAfterTheInputIsFixed)
 {
   BadInputFixture f;

@@ -314,9 +314,9 @@ TEST_P(SkeletonReaderOnClips, WrittenBVHReproducesTheMotion)
 TEST(SkeletonReader, AFrameTimeThatIsNotPositiveIsAnError)
 {
   // assimp reads a BVH Frame Time as 1 / Frame Time ticks per second; the reader took a
-  // non-positive rate for "unknown" and used 1/25 s (negative, NaN, beyond float), or kept
-  // Frame Time 0 with every TIME_STEP 0.
-  for (const char* frameTime : { "-0.03", "0", "nan", "1e300" })
+  // non-positive rate for "unknown" and used 1/25 s (negative, NaN), or kept Frame Time 0 with
+  // every TIME_STEP 0. (Beyond float: AFrameTimeBeyondFloatIsAnErrorNamingThat.)
+  for (const char* frameTime : { "-0.03", "0", "nan" })
   {
     const std::string text = std::string("HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0 0\n"
                                          "\tCHANNELS 6 Xposition Yposition Zposition Zrotation "
@@ -332,6 +332,120 @@ TEST(SkeletonReader, AFrameTimeThatIsNotPositiveIsAnError)
       << frameTime << ": " << w.errors->Last;
     std::filesystem::remove(path);
   }
+}
+
+TEST(SkeletonReader, AFrameTimeBeyondFloatIsAnErrorNamingThat)
+{
+  // Audit: Frame Time 1e300 and 1e-300, both positive, were refused as "not a positive number
+  // (assimp read 0 / inf frames per second)": assimp parses it as float32. Outside float's
+  // normal range it is refused naming that; inside it the file reads.
+  const auto file = [](const std::string& frameTime) {
+    return temporaryFile("frame-time-range.bvh",
+      "HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition Yposition Zposition "
+      "Zrotation Yrotation Xrotation\n\tEnd Site\n\t{\n\t\tOFFSET 0 3 0\n\t}\n}\nMOTION\n"
+      "Frames: 2\nFrame Time: " +
+        frameTime + "\n0 1 0 10 20 30\n0 1 0 11 21 31\n");
+  };
+  for (const char* frameTime : { "1e300", "1e-300", "1e39", "1e-40", "1e-400", "inf" })
+  {
+    const std::string path = file(frameTime);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr) << frameTime;
+    EXPECT_EQ(w.errors->Count, 1) << frameTime << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(
+                std::string("its Frame Time, ") + frameTime + ", is outside float's normal range"),
+      std::string::npos)
+      << frameTime << ": " << w.errors->Last;
+    EXPECT_EQ(w.errors->Last.find("not a positive number"), std::string::npos) << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+  for (const char* frameTime : { "1.5e-38", "3e38" })
+  {
+    const std::string path = file(frameTime);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.errors->Count, 0) << frameTime << ": " << w.errors->Last;
+    EXPECT_EQ(w.reader->GetNumberOfFrames(), 2) << frameTime;
+    EXPECT_NEAR(w.reader->GetFrameTime(), std::strtod(frameTime, nullptr),
+      1e-7 * std::strtod(frameTime, nullptr))
+      << frameTime;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(SkeletonReader, AMotionSectionWithoutRowsIsAnErrorSayingSo)
+{
+  // Audit: "Frames: 0" and no rows (assimp reads one frame) was refused with "its Frames: line
+  // says 0 but its MOTION section holds 0 data rows: the header is wrong", which it is not. A
+  // Frames: 0 line before a row is still the header's error.
+  const std::string header = "HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition "
+                             "Yposition Zposition Zrotation Yrotation Xrotation\n\tEnd Site\n\t{"
+                             "\n\t\tOFFSET 0 3 0\n\t}\n}\nMOTION\nFrames: 0\nFrame Time: 0.1\n";
+  struct Case
+  {
+    const char* name;
+    std::string rows;
+    const char* expected;
+    const char* absent;
+  };
+  const Case cases[] = {
+    { "no rows", "", "its MOTION section holds no data rows (its Frames: line says 0)",
+      "the header is wrong" },
+    { "blank lines only", "\n  \n", "at least one frame", "the header is wrong" },
+    { "a row", "0 1 0 10 20 30\n",
+      "its Frames: line says 0 but its MOTION section holds 1 data row", "no data rows" },
+  };
+  for (const Case& c : cases)
+  {
+    const std::string path = temporaryFile("no-rows.bvh", header + c.rows);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    w.reader->UpdateInformation();
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr) << c.name;
+    EXPECT_EQ(w.errors->Count, 1) << c.name << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(c.expected), std::string::npos)
+      << c.name << ": " << w.errors->Last;
+    EXPECT_EQ(w.errors->Last.find(c.absent), std::string::npos) << c.name << ": " << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(SkeletonReader, AFailedReadLeavesNoFramesOrSkeletonOfTheFileBefore)
+{
+  // Audit: RequestData does not run after a failed RequestInformation, so after a good file the
+  // output kept its skeleton and TIME_STEPS its frames, where the class promises no output.
+  const std::string good = temporaryFile("good-then-bad.bvh",
+    "HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition Yposition Zposition "
+    "Zrotation Yrotation Xrotation\n\tEnd Site\n\t{\n\t\tOFFSET 0 3 0\n\t}\n}\nMOTION\n"
+    "Frames: 3\nFrame Time: 0.1\n0 1 0 10 20 30\n0 1 0 11 21 31\n0 1 0 12 22 32\n");
+  Watched w;
+  vtkInformation* info = w.reader->GetOutputInformation(0);
+  w.reader->SetFileName(good.c_str());
+  ASSERT_EQ(w.reader->GetExecutive()->Update(), 1) << w.errors->Last;
+  ASSERT_EQ(w.reader->GetOutput()->GetNumberOfPoints(), 2);
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 3);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_RANGE()));
+
+  w.reader->SetFileName("/nonexistent/file.bvh");
+  EXPECT_EQ(w.reader->GetExecutive()->Update(), 0);
+  EXPECT_EQ(w.errors->Count, 1) << w.errors->Last;
+  EXPECT_EQ(w.reader->GetNumberOfJoints(), 0);
+  EXPECT_EQ(w.reader->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(w.reader->GetOutput()->GetNumberOfLines(), 0);
+  EXPECT_EQ(w.reader->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
+  EXPECT_FALSE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  EXPECT_FALSE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_RANGE()));
+
+  // The good file again: all back.
+  w.reader->SetFileName(good.c_str());
+  EXPECT_EQ(w.reader->GetExecutive()->Update(), 1) << w.errors->Last;
+  EXPECT_EQ(w.reader->GetOutput()->GetNumberOfPoints(), 2);
+  EXPECT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 3);
+  EXPECT_EQ(w.errors->Count, 1);
+  std::filesystem::remove(good);
 }
 
 TEST(SkeletonReader, WrittenJointsWithPositionChannelsReadBackByEveryConvention)

@@ -17,11 +17,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,6 @@ void appendBytes(std::string& bytes, const std::vector<T>& values)
   bytes.resize(at + values.size() * sizeof(T));
   std::memcpy(&bytes[at], values.data(), values.size() * sizeof(T));
 }
-
 
 /// A glTF file of one triangle (with normals) skinned to one bone of weight 1: node "mesh" holds
 /// the mesh, node "bone" is the joint. `meshNode` and `boneNode` are JSON members added to those
@@ -316,4 +317,111 @@ TEST(SkinnedMeshReader, SingularOrProjectiveTransformsAreErrors)
     EXPECT_EQ(reader->GetNumberOfBones(), 1) << c.name;
     EXPECT_EQ(errors->Count, 0) << c.name << ": " << errors->Last;
   }
+}
+
+TEST(SkinnedMeshReader, EachConfiguredDeformerKeepsItsOwnTime)
+{
+  // Audit: every deformer was given the reader's one set of matrices, so configuring a second
+  // deformer at another time silently moved the first one there too.
+  const std::string file = "glTF2/simple_skin/simple_skin.gltf";
+  if (!have(file))
+  {
+    GTEST_SKIP() << kModels + file << " is missing (assimp-testmodels)";
+  }
+  vtkNew<vtkSkinnedMeshReaderLCT> reader;
+  reader->SetFileName((kModels + file).c_str());
+  ASSERT_EQ(reader->GetExecutive()->Update(), 1);
+  ASSERT_GT(reader->GetEndTime(), 1.25);
+  const auto pointsOf = [](vtkProbeDeformerLCT* d) {
+    std::vector<Eigen::Vector3d> out;
+    vtkPolyData* pd = vtkPolyData::SafeDownCast(d->GetOutputDataObject(0));
+    for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+    {
+      Eigen::Vector3d p;
+      pd->GetPoint(i, p.data());
+      out.push_back(p);
+    }
+    return out;
+  };
+  const auto distance = [](const std::vector<Eigen::Vector3d>& a,
+                          const std::vector<Eigen::Vector3d>& b) {
+    EXPECT_EQ(a.size(), b.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    {
+      d = std::max(d, (a[i] - b[i]).norm());
+    }
+    return d;
+  };
+  vtkNew<vtkProbeDeformerLCT> first;
+  first->SetInputConnection(reader->GetOutputPort());
+  ASSERT_EQ(reader->ConfigureDeformer(first, 0.0), 1);
+  ASSERT_EQ(first->GetExecutive()->Update(), 1);
+  const std::vector<Eigen::Vector3d> atZero = pointsOf(first);
+
+  vtkNew<vtkProbeDeformerLCT> second;
+  second->SetInputConnection(reader->GetOutputPort());
+  ASSERT_EQ(reader->ConfigureDeformer(second, 1.25), 1);
+  ASSERT_EQ(second->GetExecutive()->Update(), 1);
+  const std::vector<Eigen::Vector3d> later = pointsOf(second);
+  ASSERT_GT(distance(later, atZero), 0.1); // the two times are different poses
+
+  ASSERT_EQ(first->GetExecutive()->Update(), 1);
+  EXPECT_EQ(distance(pointsOf(first), atZero), 0.0);
+  // Configuring the first deformer again moves only it.
+  ASSERT_EQ(reader->ConfigureDeformer(first, 1.25), 1);
+  ASSERT_EQ(first->GetExecutive()->Update(), 1);
+  ASSERT_EQ(second->GetExecutive()->Update(), 1);
+  EXPECT_LT(distance(pointsOf(first), later), 1e-9);
+  EXPECT_EQ(distance(pointsOf(second), later), 0.0);
+  ASSERT_EQ(reader->ConfigureDeformer(second, 0.0), 1);
+  ASSERT_EQ(second->GetExecutive()->Update(), 1);
+  ASSERT_EQ(first->GetExecutive()->Update(), 1);
+  EXPECT_LT(distance(pointsOf(second), atZero), 1e-9);
+  EXPECT_LT(distance(pointsOf(first), later), 1e-9);
+}
+
+TEST(SkinnedMeshReader, QueryErrorsNameOnlyTheirOwnCause)
+{
+  // Audit: ConfigureDeformer(d, 0) before an update also said "the time is not finite", and
+  // GetBoneMatrix named three causes at once. One message per call, naming its cause.
+  vtkNew<vtkSkinnedMeshReaderLCT> reader;
+  vtkNew<lct_test::ErrorCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkProbeDeformerLCT> deformer;
+  vtkNew<vtkMatrix4x4> m;
+  const auto expectOneError = [&](int result, const std::string& needle, const char* absent) {
+    EXPECT_EQ(result, 0) << needle;
+    EXPECT_EQ(errors->Count, 1) << errors->Last;
+    EXPECT_NE(errors->Last.find(needle), std::string::npos) << errors->Last;
+    EXPECT_EQ(errors->Last.find(absent), std::string::npos) << errors->Last;
+    errors->Count = 0;
+  };
+  expectOneError(
+    reader->ConfigureDeformer(deformer, 0.0), "nothing read yet (Update() first)", "finite");
+  expectOneError(reader->ConfigureDeformer(nullptr, 0.0), "the deformer is null", "finite");
+  EXPECT_EQ(deformer->GetNumberOfProbes(), 0);
+
+  const std::string path = triangleCharacter("query-errors", "", "", kIdentity);
+  reader->SetFileName(path.c_str());
+  ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+  ASSERT_EQ(reader->GetNumberOfBones(), 1);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  expectOneError(
+    reader->GetBoneMatrix(0, nan, m), "GetBoneMatrix: the time nan is not finite", "outside");
+  expectOneError(
+    reader->GetBoneMatrix(1, 0.0, m), "GetBoneMatrix: bone 1 is outside [0, 1)", "finite");
+  expectOneError(
+    reader->GetBoneMatrix(0, 0.0, nullptr), "GetBoneMatrix: the result matrix is null", "outside");
+  expectOneError(
+    reader->GetBoneRestMatrix(-1, m), "GetBoneRestMatrix: bone -1 is outside [0, 1)", "null");
+  expectOneError(reader->GetBoneRestMatrix(0, nullptr),
+    "GetBoneRestMatrix: the result matrix is null", "outside");
+  expectOneError(reader->ConfigureDeformer(deformer, inf),
+    "ConfigureDeformer: the time inf is not finite", "nothing read");
+  EXPECT_EQ(deformer->GetNumberOfProbes(), 0);
+  EXPECT_EQ(reader->ConfigureDeformer(deformer, 0.0), 1);
+  EXPECT_EQ(deformer->GetNumberOfProbes(), 1);
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
 }
