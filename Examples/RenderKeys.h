@@ -2289,6 +2289,14 @@ inline void CheckPly(MeshText& text)
     {
       Element e;
       e.Name = w[1];
+      // vtkPLYReader takes the first element to be the vertices: it crashes (SIGSEGV) on a
+      // face, or any other element, before them.
+      if (elements.empty() && e.Name != "vertex")
+      {
+        text.Rewind();
+        text.FailAt("the first element is \"" + Printable(e.Name) +
+          "\", not \"vertex\" (vtkPLYReader reads only files whose vertex element comes first)");
+      }
       const long long limit = e.Name == "vertex" ? Limits::MaxMeshPoints : Limits::MaxMeshCells;
       if (!ParseInteger(w[2], 0, limit, e.Count))
       {

@@ -33,8 +33,11 @@
 #include <vtkTable.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,7 +82,9 @@ analyse      prints a table (and writes DIR/analysis.csv and DIR/analysis.png, d
              and this compressor at several tolerances.
 
 Factor = 4 bytes x data rows x channels of the input / output bytes. Outputs are written to a
-temporary name (.NAME.PID.part) and renamed; on failure nothing is left behind.
+temporary name (.NAME.PID.part) and renamed; on failure nothing is left behind. An -o that is a
+symbolic link writes the file it leads to; one that is (or leads to) a directory, FIFO or device
+is refused, before any work.
 exit codes: 0 ok, 1 error (unreadable or bad input, bound not met, write failed), 2 usage.
 )";
 
@@ -113,6 +118,64 @@ bool ReadFile(const std::string& path, std::string& bytes, std::string& why)
     return false;
   }
   bytes = content.str();
+  return true;
+}
+
+/// What `mode` is, for a file that is not a regular one.
+std::string FileKind(mode_t mode)
+{
+  return S_ISDIR(mode) ? "a directory"
+    : S_ISFIFO(mode)   ? "a FIFO"
+    : S_ISCHR(mode)    ? "a character device"
+    : S_ISBLK(mode)    ? "a block device"
+    : S_ISSOCK(mode)   ? "a socket"
+                       : "not a regular file";
+}
+
+/// The file that writing `output` replaces: `output`, or where its symbolic links lead (renaming
+/// over a link would turn the link, and over a FIFO or a device that, into a regular file).
+/// False with the reason when it exists and is not a regular file, or when its directory cannot
+/// take a new file, so that the work is not done for a write that must fail.
+bool OutputTarget(const fs::path& output, fs::path& target, std::string& why)
+{
+  target = output;
+  struct stat s;
+  int links = 0;
+  int found = 0;
+  while ((found = ::lstat(target.c_str(), &s)) == 0 && S_ISLNK(s.st_mode))
+  {
+    std::error_code error;
+    const fs::path to = fs::read_symlink(target, error);
+    if (error || ++links > 40)
+    {
+      why = "cannot write " + output.string() + ": " +
+        (error ? error.message() : std::string(std::strerror(ELOOP)));
+      return false;
+    }
+    target = to.is_absolute() ? to : target.parent_path() / to;
+  }
+  const int statError = found == 0 ? 0 : errno;
+  const std::string name =
+    links == 0 ? output.string() : output.string() + " (a link to " + target.string() + ")";
+  if (found == 0)
+  {
+    if (!S_ISREG(s.st_mode))
+    {
+      why = name + " is " + FileKind(s.st_mode) + ", not a regular file";
+      return false;
+    }
+  }
+  else if (statError != ENOENT)
+  {
+    why = "cannot write " + name + ": " + std::strerror(statError);
+    return false;
+  }
+  const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (::access(directory.c_str(), W_OK | X_OK) != 0)
+  {
+    why = "cannot write " + name + ": " + directory.string() + ": " + std::strerror(errno);
+    return false;
+  }
   return true;
 }
 
@@ -321,6 +384,12 @@ bool Slice(lct_mocap::Clip& clip, const std::string& range, std::string& why)
 int Compress(const Arguments& args)
 {
   std::string why;
+  fs::path target;
+  if (!OutputTarget(args.output, target, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
   lct_mocap::Clip clip;
   if (!ReadMotion(args.input, clip, why) || !Slice(clip, args.frames, why))
   {
@@ -381,6 +450,12 @@ int Decompress(const Arguments& args)
 {
   std::string bytes;
   std::string why;
+  fs::path target;
+  if (!OutputTarget(args.output, target, why))
+  {
+    std::cerr << "lct-mocap: " << why << "; nothing written.\n";
+    return 1;
+  }
   if (!ReadFile(args.input, bytes, why))
   {
     std::cerr << "lct-mocap: " << why << "; nothing written.\n";
@@ -521,26 +596,44 @@ int Info(const Arguments& args)
 
 } // namespace
 
-bool lct_mocap::WriteAtomically(const fs::path& target, const std::string& bytes, std::string& why)
+bool lct_mocap::WriteAtomically(const fs::path& output, const std::string& bytes, std::string& why)
 {
-  if (fs::is_directory(target))
+  fs::path target;
+  if (!OutputTarget(output, target, why))
   {
-    why = target.string() + " is a directory";
     return false;
   }
   const fs::path temporary = target.parent_path() /
     ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0)
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out)
+    why = "cannot write " + temporary.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  std::size_t done = 0;
+  int writeError = 0;
+  while (done < bytes.size() && writeError == 0)
+  {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n > 0)
     {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      why = "cannot write " + temporary.string();
-      return false;
+      done += static_cast<std::size_t>(n);
     }
+    else if (n == 0 || errno != EINTR)
+    {
+      writeError = n == 0 ? EIO : errno;
+    }
+  }
+  if (::close(fd) != 0 && writeError == 0)
+  {
+    writeError = errno;
+  }
+  if (writeError != 0)
+  {
+    ::unlink(temporary.c_str());
+    why = "cannot write " + temporary.string() + ": " + std::strerror(writeError);
+    return false;
   }
   std::error_code error;
   fs::rename(temporary, target, error);
@@ -629,7 +722,11 @@ bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height
   grab->SetInput(view->GetRenderWindow());
   grab->ReadFrontBufferOff();
   grab->Update();
-  const fs::path target = png;
+  fs::path target;
+  if (!OutputTarget(png, target, why))
+  {
+    return false;
+  }
   const fs::path temporary = target.parent_path() /
     ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
   vtkNew<vtkPNGWriter> writer;
@@ -646,8 +743,9 @@ bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height
   fs::rename(temporary, target, error);
   if (error)
   {
-    fs::remove(temporary, error);
-    why = "cannot rename " + temporary.string() + " to " + png;
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
     return false;
   }
   return true;

@@ -263,10 +263,12 @@ out so that the keys file gives only the scene and props):
 
 output: frames, video and sheet are written under a temporary name (.NAME.PID.part) and renamed
 when complete; a failed run removes its temporary files and never leaves a partial file under a
-final name. DIR/manifest.json records the run (frame count, size, fps, interpolation, compare,
-scene, and each input file's path, size and FNV-1a hash). A run into a DIR that holds frames of
-a different run (or frames without a manifest) is refused unless --overwrite, which removes
-those frames, video and sheet first; slices of one run (same parameters and inputs) add up.
+final name. A final name that is a symbolic link is written through (the link stays); one that is
+a directory, FIFO or device is refused before rendering. DIR/manifest.json records the run
+(frame count, size, fps, interpolation, compare, scene, and each input file's path, size and
+FNV-1a hash). A run into a DIR that holds frames of a different run (or frames without a
+manifest) is refused unless --overwrite, which removes those frames, video and sheet first;
+slices of one run (same parameters and inputs) add up.
 `lct-render assemble DIR [--fps N]` checks that DIR holds every frame of its manifest's run at
 its size and writes video.ogv (at the manifest's fps unless --fps) and contact_sheet.png from
 them (needs no X). Progress: per-frame lines with the rate and an ETA.
@@ -290,8 +292,8 @@ process (a crash or a runaway allocation of the reader is an error message, not 
            within +-1e15, at least one cell
   .stl     binary (as VTK detects it): the file size must be 84 + 50 x the triangle count of its
            header; ASCII: must start with "solid" (the rest is VTK's parser, which reports errors)
-  .ply     the whole file: header, element counts against the file size, every line (ASCII) or
-           byte (binary), list lengths, face indices in range
+  .ply     the whole file: header (the vertex element first), element counts against the file
+           size, every line (ASCII) or byte (binary), list lengths, face indices in range
   .obj     the whole file: lines <= 262144 bytes, vertex coordinates finite, every face/line/
            point index (v, vt, vn, negative ones too) in range
   .vtk     legacy POLYDATA: header, declared point and cell counts against the limits and the
@@ -332,15 +334,48 @@ extern "C" void OnFatalSignal(int sig)
   std::raise(sig);
 }
 
-/// A file being written under a temporary name in its final directory; removed unless
-/// Commit() renamed it.
+/// Where a write to `file` goes: `file`, or where its symbolic links lead (renaming over a link
+/// would replace it with a regular file). A chain of more than 40 links is left as it is, and
+/// then refused as not a regular file.
+fs::path OutputTarget(const fs::path& file)
+{
+  fs::path target = file;
+  std::error_code ec;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(target, ec)); ++links)
+  {
+    const fs::path to = fs::read_symlink(target, ec);
+    if (ec || links == 40)
+    {
+      return file;
+    }
+    target = to.is_absolute() ? to : target.parent_path() / to;
+  }
+  return target;
+}
+
+/// "FILE exists and is not a regular file" if `file` is, or leads to, a directory, a FIFO, a
+/// device or a socket, which a write must not replace; else "".
+std::string NotARegularFile(const fs::path& file)
+{
+  const fs::path target = OutputTarget(file);
+  struct stat s;
+  if (::lstat(target.c_str(), &s) != 0 || S_ISREG(s.st_mode))
+  {
+    return "";
+  }
+  return file.string() + (target == file ? "" : " (a link to " + target.string() + ")") +
+    " exists and is not a regular file";
+}
+
+/// A file being written under a temporary name next to its final name (or, when that is a
+/// symbolic link, next to the file it leads to); removed unless Commit() renamed it.
 class Temporary
 {
 public:
   explicit Temporary(const fs::path& final)
-    : Final(final)
-    , Path(final.parent_path() /
-        ("." + final.filename().string() + "." + std::to_string(::getpid()) + ".part"))
+    : Final(OutputTarget(final))
+    , Path(this->Final.parent_path() /
+        ("." + this->Final.filename().string() + "." + std::to_string(::getpid()) + ".part"))
   {
     for (this->Slot = 0; this->Slot < MaxTemporaries && Temporaries[this->Slot][0]; ++this->Slot)
     {
@@ -364,6 +399,14 @@ public:
   /// reason returned.
   std::string Commit()
   {
+    // Checked before the run too (CheckOutput, Assemble); again here, as rename() would replace
+    // a FIFO or a device put under the final name since.
+    const std::string notAFile = NotARegularFile(this->Final);
+    if (!notAFile.empty())
+    {
+      this->Discard();
+      return notAFile;
+    }
     if (::rename(this->Path.c_str(), this->Final.c_str()) != 0)
     {
       const std::string why = std::strerror(errno);
@@ -1364,9 +1407,13 @@ std::string CheckCamera(vtkCamera* c)
     return "the view up, window centre, view shear, clipping range, view angle or parallel scale "
            "is not finite";
   }
+  // Keys are held to +-1e15 exactly, but the interpolator reproduces a key's position only to
+  // a few ulps (1e15 comes back as 1000000000000001.2): a relative slack far above that and far
+  // below any motion makes every key that was accepted render.
+  const double bound = Limits::MaxCoordinate * (1.0 + 1e-12);
   for (int i = 0; i < 3; ++i)
   {
-    if (std::fabs(p[i]) > Limits::MaxCoordinate || std::fabs(f[i]) > Limits::MaxCoordinate)
+    if (std::fabs(p[i]) > bound || std::fabs(f[i]) > bound)
     {
       return "position or focal point beyond +-1e15 (" + Num(p[i]) + ", " + Num(f[i]) + ")";
     }
@@ -1570,24 +1617,22 @@ std::string CheckOutput(const fs::path& dir, const Options& opt, bool full)
   }
   // A directory (or anything but a file) under a final name would only fail at the rename,
   // after the whole render: find it first.
-  auto inTheWay = [&](const fs::path& file) {
-    const auto s = fs::symlink_status(file, ec);
-    return !ec && fs::exists(s) && !fs::is_regular_file(s);
-  };
   for (int i = opt.First; i < opt.Last; ++i)
   {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", i);
-    if (inTheWay(dir / name))
+    const std::string problem = NotARegularFile(dir / name);
+    if (!problem.empty())
     {
-      return (dir / name).string() + " exists and is not a regular file";
+      return problem;
     }
   }
   for (const char* name : { "video.ogv", "contact_sheet.png" })
   {
-    if (full && inTheWay(dir / name))
+    const std::string problem = full ? NotARegularFile(dir / name) : "";
+    if (!problem.empty())
     {
-      return (dir / name).string() + " exists and is not a regular file";
+      return problem;
     }
   }
   return "";
@@ -2319,6 +2364,15 @@ int Assemble(int argc, char* argv[])
               << missing.back() + 1 << "/" << frames << ")\n";
     return 1;
   }
+  for (const char* name : { "video.ogv", "contact_sheet.png" })
+  {
+    const std::string problem = NotARegularFile(dir / name);
+    if (!problem.empty())
+    {
+      std::cerr << "lct-render: assemble: " << problem << "\n";
+      return 1;
+    }
+  }
   Assembler out(dir, width, height, frames, fps);
   for (int i = 0; i < frames; ++i)
   {
@@ -2377,11 +2431,15 @@ int Assemble(int argc, char* argv[])
 
 int main(int argc, char* argv[])
 {
-  for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGABRT, SIGFPE })
+  // Every signal whose default action ends the process: a temporary must not outlive it (`| head`
+  // ends a run with SIGPIPE, a CPU-time limit with SIGXCPU, batch systems send USR1 or ALRM).
+  for (int sig : { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGVTALRM, SIGPROF, SIGUSR1,
+         SIGUSR2, SIGXCPU, SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGTRAP, SIGSYS })
   {
     std::signal(sig, OnFatalSignal);
   }
-  // A file-size limit then fails the write (EFBIG, reported) instead of killing the process.
+  // SIGXFSZ is ignored instead: a file-size limit then fails the write (EFBIG, reported, the
+  // temporary removed) instead of killing the process.
   std::signal(SIGXFSZ, SIG_IGN);
   // Xlib ends the process with exit() when the X server goes away mid-run.
   std::atexit(RemoveTemporaries);

@@ -1,10 +1,12 @@
 # Driver of the Mocap.* tests of lct-mocap (cmake -P). Variables:
-#   LCT_MOCAP  path of lct-mocap          LCT_MODE  roundtrip | analyse | error
+#   LCT_MOCAP  path of lct-mocap          LCT_MODE  roundtrip | analyse | error | links
 #   LCT_OUT    scratch directory          LCT_INPUT (roundtrip, analyse) the motion file
 #   LCT_DATA   Testing/Data/Mocap         LCT_ARGS  (error) arguments, separated by |, with
-#   LCT_SETUP  (error) lctm | truncated | corrupted: first write LCT_OUT/in.lctm from small.bvh
-#              (whole, cut to 40 bytes, or with byte 30 changed)
+#   LCT_SETUP  (error) lctm | truncated | corrupted | fifo: first write LCT_OUT/in.lctm from
+#              small.bvh (whole, cut to 40 bytes, or with byte 30 changed; fifo: whole, and
+#              LCT_OUT/fifo a FIFO, LCT_OUT/link a symbolic link to it, both kept)
 #   LCT_EXIT   (error) the exit code      LCT_EXPECT (error) a phrase of the output
+#   LCT_ABSENT (error, optional) a phrase the output must not hold
 # After an error nothing may be left in LCT_OUT but what the setup wrote: no output, no .part.
 cmake_minimum_required(VERSION 3.22)
 
@@ -97,6 +99,13 @@ elseif (LCT_MODE STREQUAL "error")
       execute_process(COMMAND sh -c "head -c 40 '${LCT_OUT}/in.lctm' > '${LCT_OUT}/cut' && mv '${LCT_OUT}/cut' '${LCT_OUT}/in.lctm'")
     elseif (LCT_SETUP STREQUAL "corrupted")
       execute_process(COMMAND sh -c "printf '\\125' | dd of='${LCT_OUT}/in.lctm' bs=1 seek=30 conv=notrunc status=none")
+    elseif (LCT_SETUP STREQUAL "fifo")
+      execute_process(COMMAND mkfifo "${LCT_OUT}/fifo" RESULT_VARIABLE rc)
+      if (NOT rc EQUAL 0)
+        message(FATAL_ERROR "setup: mkfifo failed")
+      endif ()
+      file(CREATE_LINK "fifo" "${LCT_OUT}/link" SYMBOLIC)
+      list(APPEND allowed fifo link)
     endif ()
   endif ()
   string(REPLACE "|" ";" args "${LCT_ARGS}")
@@ -110,7 +119,46 @@ elseif (LCT_MODE STREQUAL "error")
   if (at EQUAL -1)
     message(FATAL_ERROR "the output does not say '${LCT_EXPECT}'")
   endif ()
+  if (DEFINED LCT_ABSENT)
+    string(FIND "${out}" "${LCT_ABSENT}" at)
+    if (NOT at EQUAL -1)
+      message(FATAL_ERROR "the output says '${LCT_ABSENT}'")
+    endif ()
+  endif ()
   lct_expect_clean("${LCT_OUT}" "${allowed}")
+  if (LCT_SETUP STREQUAL "fifo")
+    execute_process(COMMAND test -p "${LCT_OUT}/fifo" RESULT_VARIABLE not_fifo)
+    if (not_fifo OR NOT IS_SYMLINK "${LCT_OUT}/link")
+      message(FATAL_ERROR "the FIFO or the link to it was replaced")
+    endif ()
+  endif ()
+elseif (LCT_MODE STREQUAL "links")
+  # -o a symbolic link writes the file it leads to, and the link stays: a relative link to a
+  # file not there yet, then a chain of two links to the file now there; decompress likewise.
+  file(MAKE_DIRECTORY "${LCT_OUT}/elsewhere")
+  file(CREATE_LINK "elsewhere/clip.lctm" "${LCT_OUT}/link.lctm" SYMBOLIC)
+  file(CREATE_LINK "link.lctm" "${LCT_OUT}/chain.lctm" SYMBOLIC)
+  file(CREATE_LINK "elsewhere/clip.bvh" "${LCT_OUT}/link.bvh" SYMBOLIC)
+  foreach (output IN ITEMS link.lctm chain.lctm)
+    lct_run(compress "${LCT_DATA}/small.bvh" --quiet -o "${LCT_OUT}/${output}")
+    if (NOT rc EQUAL 0)
+      message(FATAL_ERROR "compress -o ${output} failed")
+    endif ()
+  endforeach ()
+  lct_run(info "${LCT_OUT}/elsewhere/clip.lctm")
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "elsewhere/clip.lctm, written through the links, is not an .lctm file")
+  endif ()
+  lct_run(decompress "${LCT_OUT}/link.lctm" -o "${LCT_OUT}/link.bvh")
+  if (NOT rc EQUAL 0 OR NOT EXISTS "${LCT_OUT}/elsewhere/clip.bvh")
+    message(FATAL_ERROR "decompress -o link.bvh did not write elsewhere/clip.bvh")
+  endif ()
+  foreach (link IN ITEMS link.lctm chain.lctm link.bvh)
+    if (NOT IS_SYMLINK "${LCT_OUT}/${link}")
+      message(FATAL_ERROR "${link} is no longer a symbolic link")
+    endif ()
+  endforeach ()
+  lct_expect_clean("${LCT_OUT}" "link.lctm;chain.lctm;link.bvh;clip.lctm;clip.bvh")
 else ()
   message(FATAL_ERROR "unknown LCT_MODE ${LCT_MODE}")
 endif ()

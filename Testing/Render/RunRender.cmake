@@ -1,6 +1,7 @@
 # Driver for the Render.* tests of lct-render (cmake -P). Variables:
-#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error | metric |
-#               stdout | compare | image | stale | assemble (described where they are run)
+#   LCT_RENDER  path of lct-render       LCT_MODE  default | slices | json | error | signal |
+#               metric | stdout | compare | image | links | stale | assemble (described where
+#               they are run)
 #   LCT_OUT     scratch directory        LCT_ARGS  extra arguments, separated by |
 #   LCT_EXPECT  (error, metric) phrase stderr (error) or stdout (metric) must contain
 #   LCT_EXIT    (error) the exit code expected, default 1 (2 for usage errors)
@@ -9,6 +10,7 @@
 #               many-keys=N[:compare] (a keys file of N camera keys, LCT_OUT/many.json)
 #   LCT_FSIZE   (error) file-size limit for lct-render, in 512-byte blocks (sh's ulimit -f)
 #   LCT_ENV     (error) NAME=VALUE in lct-render's environment
+#   LCT_SIGNAL  (signal) the name of the signal that ends the run (PIPE, USR1, ...)
 # After an error, no temporary (.*.part) may remain, and nothing at all may be written unless
 # LCT_SETUP or LCT_FSIZE made the run fail only after frames were written.
 # Rendering modes print "LCT_SKIP" (the test's SKIP_REGULAR_EXPRESSION) when lct-render exits 125
@@ -143,6 +145,68 @@ if (LCT_MODE STREQUAL "error")
       endif ()
     endif ()
   endif ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "signal")
+  # lct-render ended mid-run by the signal LCT_SIGNAL (a name: PIPE, USR1, ...): PIPE through
+  # `| head -n 1`, which leaves after the first line, the others sent with kill once the video's
+  # temporary exists. The process must die of that signal and leave no temporary (.*.part).
+  # sh runs it (POSIX sh has no PIPESTATUS: the status goes through a file) with no core dumps.
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  set(status_file "${LCT_OUT}.status")
+  file(REMOVE "${status_file}")
+  set(script [=[
+ulimit -c 0
+render=$0 out=$1 keys=$2 sig=$3 status=$4
+if [ "$sig" = PIPE ]; then
+  { "$render" --out "$out" --frames 1000 --size 64x48 "$keys"; echo $? > "$status"; } | head -n 1
+  exit 0
+fi
+# Without job control sh starts a background command with INT and QUIT ignored: undone, as
+# from an interactive shell.
+env --default-signal "$render" --out "$out" --frames 1000 --size 64x48 "$keys" > /dev/null &
+pid=$!
+n=0
+while [ $n -lt 1200 ] && kill -0 $pid 2> /dev/null &&
+  ! ls -a "$out" 2> /dev/null | grep -q '^\.video\.ogv\..*\.part$'; do
+  sleep 0.05
+  n=$((n + 1))
+done
+kill -s "$sig" $pid
+wait $pid
+echo $? > "$status"
+]=])
+  execute_process(
+    COMMAND sh -c "${script}" "${LCT_RENDER}" "${LCT_OUT}" ${LCT_ARGS} "${LCT_SIGNAL}"
+            "${status_file}"
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "sh: exit ${rc}\n${out}${err}")
+  if (NOT EXISTS "${status_file}")
+    message(FATAL_ERROR "the shell running lct-render gave no exit status")
+  endif ()
+  file(STRINGS "${status_file}" status LIMIT_COUNT 1)
+  file(REMOVE "${status_file}")
+  if (status EQUAL 125)
+    message(STATUS "LCT_SKIP: no DISPLAY (run under xvfb-run -a)")
+    return()
+  endif ()
+  set(died_of "")
+  if (status GREATER 128)
+    execute_process(COMMAND sh -c "kill -l $0" "${status}" OUTPUT_VARIABLE died_of
+      OUTPUT_STRIP_TRAILING_WHITESPACE)
+  endif ()
+  if (NOT died_of STREQUAL LCT_SIGNAL)
+    message(FATAL_ERROR
+      "lct-render exited with ${status} (${died_of}), expected to die of SIG${LCT_SIGNAL}")
+  endif ()
+  file(GLOB leftovers "${LCT_OUT}/.*")
+  if (leftovers)
+    message(FATAL_ERROR "SIG${LCT_SIGNAL} left temporary files behind: ${leftovers}")
+  endif ()
+  message(STATUS "SIG${LCT_SIGNAL} ended lct-render (exit ${status}) and left no temporary")
   return()
 endif ()
 
@@ -292,6 +356,64 @@ if (LCT_MODE STREQUAL "image")
   if (NOT rc EQUAL 0)
     message(FATAL_ERROR "${LCT_OUT}/${LCT_FRAME} does not match ${LCT_BASELINE} (see ${LCT_OUT})")
   endif ()
+  return()
+endif ()
+
+if (LCT_MODE STREQUAL "links")
+  # Final names that are symbolic links are written through: frame_0000.png a relative link to
+  # a file not there yet, video.ogv an absolute one to an existing file, contact_sheet.png a link
+  # to a link. They stay links, and what they lead to is complete. Then `assemble` refuses a FIFO
+  # named video.ogv (it replaced it with a file) and leaves it.
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  set(elsewhere "${LCT_OUT}/elsewhere")
+  file(MAKE_DIRECTORY "${elsewhere}")
+  file(WRITE "${elsewhere}/video.ogv" "an older video\n")
+  file(CREATE_LINK "elsewhere/first.png" "${LCT_OUT}/frame_0000.png" SYMBOLIC)
+  file(CREATE_LINK "${elsewhere}/video.ogv" "${LCT_OUT}/video.ogv" SYMBOLIC)
+  file(CREATE_LINK "sheet.png" "${elsewhere}/sheet-link" SYMBOLIC)
+  file(CREATE_LINK "elsewhere/sheet-link" "${LCT_OUT}/contact_sheet.png" SYMBOLIC)
+  lct_run("${LCT_OUT}" --frames 4 --size 64x48 ${LCT_ARGS})
+  if (lct_skipped)
+    return()
+  endif ()
+  lct_expect_full("${LCT_OUT}" 4)
+  foreach (pair IN ITEMS "frame_0000.png=first.png=89504e47" "video.ogv=video.ogv=4f676753"
+      "contact_sheet.png=sheet.png=89504e47")
+    string(REPLACE "=" ";" pair "${pair}")
+    list(GET pair 0 link)
+    list(GET pair 1 target)
+    list(GET pair 2 magic)
+    if (NOT IS_SYMLINK "${LCT_OUT}/${link}")
+      message(FATAL_ERROR "${link} is no longer a symbolic link")
+    endif ()
+    file(READ "${elsewhere}/${target}" head HEX LIMIT 4)
+    if (NOT head STREQUAL magic)
+      message(FATAL_ERROR "elsewhere/${target} (through ${link}) starts with ${head}, not ${magic}")
+    endif ()
+  endforeach ()
+  file(GLOB leftovers "${elsewhere}/.*")
+  if (leftovers)
+    message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+  endif ()
+  file(REMOVE "${LCT_OUT}/video.ogv")
+  execute_process(COMMAND mkfifo "${LCT_OUT}/video.ogv" RESULT_VARIABLE rc)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "mkfifo failed")
+  endif ()
+  execute_process(
+    COMMAND "${LCT_RENDER}" assemble "${LCT_OUT}"
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "assemble with a FIFO named video.ogv: exit ${rc}\n${out}${err}")
+  lct_contains("${err}" "${LCT_OUT}/video.ogv exists and is not a regular file" stderr)
+  execute_process(COMMAND test -p "${LCT_OUT}/video.ogv" RESULT_VARIABLE not_fifo)
+  file(GLOB leftovers "${LCT_OUT}/.*")
+  if (NOT rc EQUAL 1 OR not_fifo OR leftovers)
+    message(FATAL_ERROR "assemble did not refuse the FIFO cleanly (exit ${rc}, FIFO kept: "
+      "${not_fifo} = 0, temporaries: ${leftovers})")
+  endif ()
+  message(STATUS "links written through, a FIFO refused")
   return()
 endif ()
 
