@@ -568,6 +568,7 @@ void vtkCameraInterpolatorLCT::Initialize()
   in.OrientationsCurrent = true;
   in.CameraMatricesCurrent = false;
   in.KeyTangentsCurrent = false;
+  in.ClampReported = false; // new keys, a new range: its first clamp is reported again
   this->Modified();
 }
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <new>
 #include <sstream>
@@ -22,8 +23,31 @@ namespace
 {
 
 /// Writes `bytes` to `target` through `target.part`, renamed when complete.
-bool WriteAtomically(const std::string& target, const std::string& bytes, std::string& why)
+bool WriteAtomically(const std::string& name, const std::string& bytes, std::string& why)
 {
+  // Renaming over a symbolic link, a FIFO or a device would turn it into a regular file (as
+  // root, over /dev/stdout): a link is written through, to the file it leads to, and anything
+  // but a regular file is refused.
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::path resolved = name;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(resolved, error)); ++links)
+  {
+    const fs::path to = fs::read_symlink(resolved, error);
+    if (error || links == 40)
+    {
+      why = "cannot write " + name + ": " + (error ? error.message() : "too many symbolic links");
+      return false;
+    }
+    resolved = to.is_absolute() ? to : resolved.parent_path() / to;
+  }
+  const fs::file_status status = fs::status(resolved, error);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+  {
+    why = name + " is not a regular file (a directory, FIFO or device)";
+    return false;
+  }
+  const std::string target = resolved.string();
   const std::string temporary = target + ".part";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

@@ -623,6 +623,7 @@ void vtkTransformInterpolatorLCT::Initialize()
   in.KeyLogs = lct::KeyLogs(in.P);
   in.LogsStatus = lct::Status::Ok;
   in.KeysChanged(true);
+  in.ClampReported = false; // new keys, a new range: its first clamp is reported again
   this->Modified();
 }
 

@@ -969,3 +969,21 @@ TEST(CameraInterpolatorLCT, HorizontalViewAnglesAreReproducedAndNotMixedWithVert
     << errors->Last;
   EXPECT_EQ(path->GetNumberOfCameras(), 2);
 }
+
+// Audit (session 29): likewise for cameras: Initialize() reports the next clamp again.
+TEST(CameraInterpolatorLCT, InitializeReportsTheNextClampAgain)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<ErrorCounter> warnings;
+  path->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkNew<vtkCamera> key, out;
+  for (int round = 1; round <= 2; ++round)
+  {
+    path->Initialize();
+    ASSERT_EQ(path->AddCamera(0.0, key), 1);
+    ASSERT_EQ(path->AddCamera(1.0, key), 1);
+    ASSERT_EQ(path->InterpolateCamera(-1.0, out), 1);
+    ASSERT_EQ(path->InterpolateCamera(-2.0, out), 1);
+    EXPECT_EQ(warnings->Count, round) << warnings->Last;
+  }
+}

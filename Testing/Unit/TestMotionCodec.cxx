@@ -2,7 +2,10 @@
 // slice), measured independently of the compressor's own report; the written BVH keeps it;
 // synthetic skeletons with stretch (the uncompensated path), single frames and huge offsets;
 // every truncation and every single-byte corruption of a file refused; bad input refused.
+#include "vtkMotionCodecLCT.h"
 #include "vtkSkeletonAnimationReader.h"
+
+#include "VtkTestHelpers.h"
 
 #include "lct/BVHWriter.h"
 #include "lct/MotionCodec.h"
@@ -19,6 +22,8 @@
 #include <limits>
 #include <random>
 #include <sstream>
+
+#include <sys/stat.h>
 
 namespace
 {
@@ -50,10 +55,12 @@ double MaxPositionError(const lct::SkeletalAnimation& a, const lct::SkeletalAnim
     for (std::size_t j = 0; j < a.joints.size(); ++j)
     {
       const int p = a.joints[j].parent;
-      wa[j] = p < 0 ? a.local(f, static_cast<int>(j))
-                    : Eigen::Matrix4d(wa[static_cast<std::size_t>(p)] * a.local(f, static_cast<int>(j)));
-      wb[j] = p < 0 ? b.local(f, static_cast<int>(j))
-                    : Eigen::Matrix4d(wb[static_cast<std::size_t>(p)] * b.local(f, static_cast<int>(j)));
+      wa[j] = p < 0
+        ? a.local(f, static_cast<int>(j))
+        : Eigen::Matrix4d(wa[static_cast<std::size_t>(p)] * a.local(f, static_cast<int>(j)));
+      wb[j] = p < 0
+        ? b.local(f, static_cast<int>(j))
+        : Eigen::Matrix4d(wb[static_cast<std::size_t>(p)] * b.local(f, static_cast<int>(j)));
       const double e = (wa[j].block<3, 1>(0, 3) - wb[j].block<3, 1>(0, 3)).norm();
       worst = std::isnan(e) ? std::numeric_limits<double>::infinity() : std::max(worst, e);
     }
@@ -129,7 +136,8 @@ void ExpectRoundTrip(const lct::SkeletalAnimation& input, double tolerance,
   ASSERT_TRUE(file.ok()) << label << ": " << why;
   EXPECT_EQ(report.bytes, file.value.size());
   lct::MotionMetadata read;
-  const lct::Result<lct::SkeletalAnimation> decoded = lct::decompressMotion(file.value, &read, &why);
+  const lct::Result<lct::SkeletalAnimation> decoded =
+    lct::decompressMotion(file.value, &read, &why);
   ASSERT_TRUE(decoded.ok()) << label << ": " << why;
   ExpectSameHierarchy(input, decoded.value);
   const double error = MaxPositionError(input, decoded.value);
@@ -183,9 +191,11 @@ TEST_P(MotionCodecOnClips, TheWrittenBVHKeepsTheBound)
   lct::MotionCompressionOptions options;
   options.tolerance = tolerance;
   std::string why;
-  const lct::Result<std::string> file = lct::compressMotion(slice, Metadata(slice), options, nullptr, &why);
+  const lct::Result<std::string> file =
+    lct::compressMotion(slice, Metadata(slice), options, nullptr, &why);
   ASSERT_TRUE(file.ok()) << why;
-  const lct::Result<lct::SkeletalAnimation> decoded = lct::decompressMotion(file.value, nullptr, &why);
+  const lct::Result<lct::SkeletalAnimation> decoded =
+    lct::decompressMotion(file.value, nullptr, &why);
   ASSERT_TRUE(decoded.ok()) << why;
   const std::string path = std::string(LCT_BINARY_DIR) + "/Testing/Temporary/codec-" + GetParam();
   {
@@ -199,8 +209,8 @@ TEST_P(MotionCodecOnClips, TheWrittenBVHKeepsTheBound)
   EXPECT_LE(MaxPositionError(slice, written), tolerance * (1.0 + 1e-4));
 }
 
-INSTANTIATE_TEST_SUITE_P(Clips, MotionCodecOnClips,
-  ::testing::Values("01_01.bvh", "01_03.bvh", "Boxing_Toes.bvh"));
+INSTANTIATE_TEST_SUITE_P(
+  Clips, MotionCodecOnClips, ::testing::Values("01_01.bvh", "01_03.bvh", "Boxing_Toes.bvh"));
 
 TEST(MotionCodec, SyntheticSkeletonsWithAndWithoutStretch)
 {
@@ -226,7 +236,8 @@ TEST(MotionCodec, EveryTruncationAndEveryByteFlipIsRefused)
   lct::MotionCompressionOptions options;
   options.tolerance = 0.05;
   std::string why;
-  const lct::Result<std::string> file = lct::compressMotion(input, Metadata(input), options, nullptr, &why);
+  const lct::Result<std::string> file =
+    lct::compressMotion(input, Metadata(input), options, nullptr, &why);
   ASSERT_TRUE(file.ok()) << why;
   const std::string& bytes = file.value;
   ASSERT_TRUE(lct::decompressMotion(bytes).ok());
@@ -311,6 +322,41 @@ TEST(MotionCodec, BadInputIsRefusedWithItsCause)
   o.tolerance = 1e-300;
   const lct::Status tiny = status(Synthetic(3, 20, false, 1e6), o);
   EXPECT_NE(tiny, lct::Status::Ok);
+}
+
+// Audit (session 29): Compress and Decompress renamed their temporary over the output, which
+// turned a symbolic link or a FIFO into a regular file. A link is written through now (it stays
+// a link), and a FIFO is refused, left as it is.
+TEST(MotionCodec, OutputsAreWrittenThroughLinksAndNeverOverFifos)
+{
+  namespace fs = std::filesystem;
+  const std::string data = std::string(LCT_SOURCE_DIR) + "/Testing/Data/Mocap/small.bvh";
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  reader->SetFileName(data.c_str());
+  reader->UpdateInformation();
+  const fs::path dir = fs::path(LCT_BINARY_DIR) / "Testing/Temporary/codec-links";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "motion.lctm", link = dir / "link.lctm", fifo = dir / "fifo.lctm";
+  fs::create_symlink("motion.lctm", link);
+  vtkNew<vtkMotionCodecLCT> codec;
+  vtkNew<lct_test::ErrorCounter> errors;
+  codec->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(codec->Compress(reader, link.c_str()), 1) << errors->Last;
+  EXPECT_TRUE(fs::is_symlink(link));
+  ASSERT_TRUE(fs::is_regular_file(file));
+  EXPECT_GT(fs::file_size(file), 0u);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(codec->Compress(reader, fifo.c_str()), 0);
+  EXPECT_NE(errors->Last.find("is not a regular file"), std::string::npos) << errors->Last;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  const fs::path bvh = dir / "out.bvh", bvhLink = dir / "out-link.bvh";
+  fs::create_symlink("out.bvh", bvhLink);
+  ASSERT_EQ(codec->Decompress(file.c_str(), bvhLink.c_str()), 1) << errors->Last;
+  EXPECT_TRUE(fs::is_symlink(bvhLink));
+  EXPECT_TRUE(fs::is_regular_file(bvh));
+  EXPECT_EQ(errors->Count, 1);
+  fs::remove_all(dir);
 }
 
 } // namespace

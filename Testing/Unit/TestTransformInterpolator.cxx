@@ -688,3 +688,23 @@ TEST(TransformInterpolatorLCT, NoJumpWhereTheReferenceKeyChanges)
     }
   }
 }
+
+// Audit (session 29): the clamp warning is "reported once"; Initialize() did not reset that, so
+// an interpolator reused for new keys clamped silently.
+TEST(TransformInterpolatorLCT, InitializeReportsTheNextClampAgain)
+{
+  vtkNew<vtkTransformInterpolatorLCT> path;
+  vtkNew<lct_test::ErrorCounter> warnings;
+  path->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkNew<vtkTransform> key;
+  vtkNew<vtkMatrix4x4> out;
+  for (int round = 1; round <= 2; ++round)
+  {
+    path->Initialize();
+    ASSERT_EQ(path->AddTransform(0.0, key), 1);
+    ASSERT_EQ(path->AddTransform(1.0, key), 1);
+    ASSERT_EQ(path->InterpolateTransform(2.0, out), 1);
+    ASSERT_EQ(path->InterpolateTransform(3.0, out), 1);
+    EXPECT_EQ(warnings->Count, round) << warnings->Last;
+  }
+}
