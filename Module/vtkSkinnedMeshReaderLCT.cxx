@@ -66,11 +66,8 @@ bool affineOf(const aiMatrix4x4& a, Eigen::Matrix4d& m)
 /// sigma_max / sigma_min (Inf for a singular map).
 bool invertible(const Eigen::Matrix4d& m, double& condition)
 {
-  const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
-  const Eigen::Matrix3d unit = lct::scaledByPowerOfTwo(linear, -lct::unitScaleExponent(linear));
-  const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(unit).singularValues();
-  condition = sigma[2] > 0.0 ? sigma[0] / sigma[2] : std::numeric_limits<double>::infinity();
-  return sigma[2] > 0.0 && sigma[0] <= lct::kMaxConditionNumber * sigma[2];
+  condition = lct::linearConditionNumber(m);
+  return condition <= lct::kMaxConditionNumber;
 }
 
 /// Why an affine map cannot be inverted (invertible() false), for an error message.

@@ -5,6 +5,7 @@
 #include "lct/PolarDecomposition.h"
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include <cmath>
 #include <limits>
@@ -81,6 +82,14 @@ bool determinantMatches(const Eigen::Matrix4d& result, double expected)
   const double representable = 2.0 * std::numeric_limits<double>::epsilon() *
     (accurateCofactors(unit).cwiseAbs().cwiseProduct(unit.cwiseAbs())).sum() / det;
   return std::abs(got - expected) <= 1e-9 * (1.0 + std::abs(expected)) + representable;
+}
+
+double linearConditionNumber(const Eigen::Matrix4d& m)
+{
+  const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d unit = scaledByPowerOfTwo(linear, -unitScaleExponent(linear));
+  const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(unit).singularValues();
+  return sigma[2] > 0.0 ? sigma[0] / sigma[2] : std::numeric_limits<double>::infinity();
 }
 
 bool needsAccurateProducts(const Eigen::Matrix4d& m)

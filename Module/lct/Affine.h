@@ -53,6 +53,11 @@ VTKLCT_EXPORT Eigen::Matrix4d worldStep(const Eigen::Matrix4d& reference, const 
 VTKLCT_EXPORT Eigen::Matrix4d applyWorldStep(
   const Eigen::Matrix4d& reference, const Eigen::Matrix4d& step, bool accurate);
 
+/// sigma_max / sigma_min of the linear part, at unit scale so that only their ratio counts (Inf
+/// for a singular one; a reflection has one too). The module inverts a linear part only when it
+/// is at most kMaxConditionNumber.
+VTKLCT_EXPORT double linearConditionNumber(const Eigen::Matrix4d& m);
+
 /// Whether the plain products with this map lose digits: ||A||_F^3 / det A > 1e3 (an upper bound
 /// of cond(A)^2 times 5.2, and at least cond(A)). relativeStep and the relative form use exact
 /// minors and compensated products then.

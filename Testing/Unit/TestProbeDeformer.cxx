@@ -1677,3 +1677,48 @@ TEST(ProbeDeformer, ANaNInACarriedNormalIsNamed)
     std::string::npos)
     << errors->Last;
 }
+
+// Audit (session 29): current * rest^-1 was a plain product with the rest's inverse, which
+// cancels for an ill-conditioned rest (8 % off at condition 1e15, 2e-4 at 1e13, status 1), and
+// rest matrices were not checked for condition. The step now comes from exact minors, and a rest
+// beyond the module's condition limit (1e13) is refused.
+TEST(ProbeDeformer, IllConditionedRestMatricesAreAccurateOrRefused)
+{
+  lct_test::RandomTransforms random(4242);
+  for (const double condition : { 1e6, 1e10, 1e12, 1e15 })
+  {
+    const Eigen::Matrix3d r = random.Rotation(), q = random.Rotation();
+    Eigen::Matrix4d rest = Eigen::Matrix4d::Identity();
+    rest.topLeftCorner<3, 3>() =
+      r * Eigen::Vector3d(1.0, 0.5, 1.0 / condition).asDiagonal() * q.transpose();
+    rest.topRightCorner<3, 1>() = Eigen::Vector3d(0.1, 0.2, 0.3);
+    Eigen::Matrix4d current = rest;
+    current.topLeftCorner<3, 3>() *= 2.0; // exact: current rest^-1 = [2 I, -t]
+    vtkNew<vtkMatrix4x4> restMatrix, currentMatrix;
+    lct_test::toVtk(rest, restMatrix);
+    lct_test::toVtk(current, currentMatrix);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->InsertNextPoint(1, 1, 1);
+    vtkNew<vtkPolyData> mesh;
+    mesh->SetPoints(points);
+    vtkNew<vtkProbeDeformerLCT> deformer;
+    vtkNew<lct_test::ErrorCounter> errors;
+    deformer->AddObserver(vtkCommand::ErrorEvent, errors);
+    deformer->SetInputData(mesh);
+    deformer->AddProbe(currentMatrix, restMatrix);
+    const int ok = deformer->GetExecutive()->Update();
+    if (condition > 1e13)
+    {
+      EXPECT_EQ(ok, 0) << condition;
+      EXPECT_NE(errors->Last.find("too ill-conditioned to invert"), std::string::npos)
+        << errors->Last;
+      continue;
+    }
+    ASSERT_EQ(ok, 1) << condition << ": " << errors->Last;
+    double p[3];
+    deformer->GetOutput()->GetPoint(0, p);
+    EXPECT_LT((Eigen::Vector3d(p[0], p[1], p[2]) - Eigen::Vector3d(1.9, 1.8, 1.7)).norm(), 1e-12)
+      << condition;
+  }
+}
