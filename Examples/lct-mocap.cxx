@@ -14,6 +14,7 @@
 #include "lct/BVHWriter.h"
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
+#include "lct/OutputFile.h"
 
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
@@ -599,52 +600,7 @@ int Info(const Arguments& args)
 bool lct_mocap::WriteAtomically(const fs::path& output, const std::string& bytes, std::string& why)
 {
   fs::path target;
-  if (!OutputTarget(output, target, why))
-  {
-    return false;
-  }
-  const fs::path temporary = target.parent_path() /
-    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0)
-  {
-    why = "cannot write " + temporary.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  std::size_t done = 0;
-  int writeError = 0;
-  while (done < bytes.size() && writeError == 0)
-  {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n > 0)
-    {
-      done += static_cast<std::size_t>(n);
-    }
-    else if (n == 0 || errno != EINTR)
-    {
-      writeError = n == 0 ? EIO : errno;
-    }
-  }
-  if (::close(fd) != 0 && writeError == 0)
-  {
-    writeError = errno;
-  }
-  if (writeError != 0)
-  {
-    ::unlink(temporary.c_str());
-    why = "cannot write " + temporary.string() + ": " + std::strerror(writeError);
-    return false;
-  }
-  std::error_code error;
-  fs::rename(temporary, target, error);
-  if (error)
-  {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
-    return false;
-  }
-  return true;
+  return OutputTarget(output, target, why) && lct::writeFileAtomically(target, bytes, why);
 }
 
 bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height,

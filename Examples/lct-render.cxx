@@ -7,6 +7,8 @@
 #include "CameraFlightScene.h"
 #include "RenderKeys.h"
 
+#include "lct/OutputFile.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCameraInterpolator.h"
 #include "vtkCameraInterpolatorLCT.h"
@@ -334,23 +336,10 @@ extern "C" void OnFatalSignal(int sig)
   std::raise(sig);
 }
 
-/// Where a write to `file` goes: `file`, or where its symbolic links lead (renaming over a link
-/// would replace it with a regular file). A chain of more than 40 links is left as it is, and
-/// then refused as not a regular file.
+/// Where a write to `file` goes (lct::outputTarget): renaming over a link would replace it.
 fs::path OutputTarget(const fs::path& file)
 {
-  fs::path target = file;
-  std::error_code ec;
-  for (int links = 0; fs::is_symlink(fs::symlink_status(target, ec)); ++links)
-  {
-    const fs::path to = fs::read_symlink(target, ec);
-    if (ec || links == 40)
-    {
-      return file;
-    }
-    target = to.is_absolute() ? to : target.parent_path() / to;
-  }
-  return target;
+  return lct::outputTarget(file);
 }
 
 /// "FILE exists and is not a regular file" if `file` is, or leads to, a directory, a FIFO, a

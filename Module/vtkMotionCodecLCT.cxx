@@ -5,12 +5,12 @@
 #include "lct/BVHWriter.h"
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
+#include "lct/OutputFile.h"
 
 #include "vtkObjectFactory.h"
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <new>
 #include <sstream>
@@ -18,58 +18,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkMotionCodecLCT);
-
-namespace
-{
-
-/// Writes `bytes` to `target` through `target.part`, renamed when complete.
-bool WriteAtomically(const std::string& name, const std::string& bytes, std::string& why)
-{
-  // Renaming over a symbolic link, a FIFO or a device would turn it into a regular file (as
-  // root, over /dev/stdout): a link is written through, to the file it leads to, and anything
-  // but a regular file is refused.
-  namespace fs = std::filesystem;
-  std::error_code error;
-  fs::path resolved = name;
-  for (int links = 0; fs::is_symlink(fs::symlink_status(resolved, error)); ++links)
-  {
-    const fs::path to = fs::read_symlink(resolved, error);
-    if (error || links == 40)
-    {
-      why = "cannot write " + name + ": " + (error ? error.message() : "too many symbolic links");
-      return false;
-    }
-    resolved = to.is_absolute() ? to : resolved.parent_path() / to;
-  }
-  const fs::file_status status = fs::status(resolved, error);
-  if (fs::exists(status) && !fs::is_regular_file(status))
-  {
-    why = name + " is not a regular file (a directory, FIFO or device)";
-    return false;
-  }
-  const std::string target = resolved.string();
-  const std::string temporary = target + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out)
-    {
-      std::remove(temporary.c_str());
-      why = "cannot write " + temporary;
-      return false;
-    }
-  }
-  if (std::rename(temporary.c_str(), target.c_str()) != 0)
-  {
-    std::remove(temporary.c_str());
-    why = "cannot rename " + temporary + " into place";
-    return false;
-  }
-  return true;
-}
-
-} // namespace
 
 //------------------------------------------------------------------------------
 vtkMotionCodecLCT::vtkMotionCodecLCT() = default;
@@ -164,7 +112,7 @@ int vtkMotionCodecLCT::CompressOrThrow(vtkSkeletonAnimationReader* reader, const
     vtkErrorMacro(<< "Compress: " << why << "; nothing written.");
     return 0;
   }
-  if (!WriteAtomically(fileName, file.value, why))
+  if (!lct::writeFileAtomically(fileName, file.value, why))
   {
     vtkErrorMacro(<< "Compress: " << why << "; nothing written.");
     return 0;
@@ -242,7 +190,8 @@ int vtkMotionCodecLCT::DecompressOrThrow(const char* lctmFile, const char* bvhFi
   }
   std::ostringstream text;
   const std::string order = this->RotationOrder ? this->RotationOrder : metadata.rotationOrder;
-  if (!lct::writeBVH(motion.value, order, text, &why) || !WriteAtomically(bvhFile, text.str(), why))
+  if (!lct::writeBVH(motion.value, order, text, &why) ||
+    !lct::writeFileAtomically(bvhFile, text.str(), why))
   {
     vtkErrorMacro(<< "Decompress: " << why << "; nothing written.");
     return 0;

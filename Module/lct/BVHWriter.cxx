@@ -180,8 +180,11 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
           "joint " + joint.name + " at frame " + std::to_string(f) +
             " is not a rotation and translation (BVH holds no scale, shear or reflection)");
       }
-      if ((m.topRightCorner<3, 1>() - offsets[static_cast<std::size_t>(j)]).norm() >
-        1e-12 * (1.0 + offsets[static_cast<std::size_t>(j)].norm()))
+      // Largest entries, not norms: a norm squares them and is Inf beyond ~1.3e154, where
+      // Inf > Inf dropped a translation motion of 1e300 with success.
+      const Eigen::Vector3d& offset = offsets[static_cast<std::size_t>(j)];
+      if ((m.topRightCorner<3, 1>() - offset).cwiseAbs().maxCoeff() >
+        1e-12 * (1.0 + offset.cwiseAbs().maxCoeff()))
       {
         moves[static_cast<std::size_t>(j)] = true;
       }

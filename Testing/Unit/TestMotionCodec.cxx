@@ -356,7 +356,55 @@ TEST(MotionCodec, OutputsAreWrittenThroughLinksAndNeverOverFifos)
   EXPECT_TRUE(fs::is_symlink(bvhLink));
   EXPECT_TRUE(fs::is_regular_file(bvh));
   EXPECT_EQ(errors->Count, 1);
+  // Its temporary was the fixed name OUTPUT.part, opened through whatever was there: a FIFO there
+  // hung Compress, a link there wrote into the file it led to.
+  const fs::path hang = dir / "hang.lctm", victim = dir / "victim.txt";
+  ASSERT_EQ(::mkfifo((hang.string() + ".part").c_str(), 0600), 0);
+  {
+    std::ofstream(victim) << "precious\n";
+  }
+  fs::create_symlink("victim.txt", dir / "motion.lctm.part");
+  ASSERT_EQ(codec->Compress(reader, hang.c_str()), 1) << errors->Last;
+  ASSERT_EQ(codec->Compress(reader, file.c_str()), 1) << errors->Last;
+  EXPECT_TRUE(fs::is_regular_file(hang));
+  std::ifstream kept(victim);
+  std::string line;
+  std::getline(kept, line);
+  EXPECT_EQ(line, "precious");
   fs::remove_all(dir);
+}
+
+// Audit (session 29): writeBVH's test for a moving joint compared norms, which are Inf beyond
+// ~1.3e154 (Inf > Inf is false): a child translated from 1e300 to 2e300 was written with a fixed
+// OFFSET and rotation channels only, its motion dropped, with success.
+TEST(MotionCodec, WriteBVHKeepsTheMotionOfHugeTranslations)
+{
+  for (const double scale : { 1.0, 1e150, 1e300 })
+  {
+    lct::SkeletalAnimation a;
+    a.frames = 3;
+    a.frameTime = 0.1;
+    a.joints.push_back({ "root", -1, false });
+    a.joints.push_back({ "child", 0, false });
+    a.joints.push_back({ "tip", 1, true });
+    for (int f = 0; f < 3; ++f)
+    {
+      a.locals.push_back(Eigen::Matrix4d::Identity());
+      Eigen::Matrix4d child = Eigen::Matrix4d::Identity();
+      child(0, 3) = scale * (1.0 + 0.5 * f);
+      a.locals.push_back(child);
+      Eigen::Matrix4d tip = Eigen::Matrix4d::Identity();
+      tip(1, 3) = 1.0;
+      a.locals.push_back(tip);
+    }
+    std::ostringstream out;
+    std::string why;
+    ASSERT_TRUE(lct::writeBVH(a, "ZXY", out, &why)) << scale << ": " << why;
+    const std::string text = out.str();
+    const std::size_t child = text.find("child");
+    ASSERT_NE(child, std::string::npos);
+    EXPECT_NE(text.find("CHANNELS 6", child), std::string::npos) << scale << "\n" << text;
+  }
 }
 
 } // namespace

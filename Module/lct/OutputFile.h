@@ -1,0 +1,35 @@
+/**
+ * @file OutputFile.h
+ * @brief Writing an output file whole or not at all, without replacing what is not a file.
+ *
+ * The tools and vtkMotionCodecLCT write a temporary beside the output and rename it over the
+ * output when complete, so a failed write never leaves a partial file under the final name.
+ * Renaming over a symbolic link would turn the link into a regular file, and over a FIFO or a
+ * device (as root: /dev/stdout) replace it; a temporary under a name one can foresee is opened
+ * through whatever was put there (a FIFO hangs the writer, a link writes into another file).
+ */
+#ifndef lct_OutputFile_h
+#define lct_OutputFile_h
+
+#include "vtkLCTModule.h"
+
+#include <filesystem>
+#include <string>
+
+namespace lct
+{
+
+/// The file that writing `name` replaces: `name`, or where its symbolic links lead (a chain of
+/// more than 40 is left as it is, and then is not a regular file).
+VTKLCT_EXPORT std::filesystem::path outputTarget(const std::filesystem::path& name);
+
+/// Writes `bytes` to outputTarget(name) through a new temporary beside it (created exclusively,
+/// under an unforeseeable name), renamed over it when complete. False, with `why` naming the
+/// cause (and nothing left behind), when the target exists and is not a regular file, or when
+/// creating, writing or renaming fails.
+VTKLCT_EXPORT bool writeFileAtomically(
+  const std::filesystem::path& name, const std::string& bytes, std::string& why);
+
+} // namespace lct
+
+#endif
