@@ -12,6 +12,7 @@
 
 #include <Eigen/SVD>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -52,6 +53,7 @@ struct vtkLogTransform::State
 vtkLogTransform::vtkLogTransform()
   : Internal(new State)
 {
+  this->MatrixWrittenTime = this->Matrix->GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -455,11 +457,28 @@ vtkAbstractTransform* vtkLogTransform::MakeTransform()
 }
 
 //------------------------------------------------------------------------------
+vtkMTimeType vtkLogTransform::GetMTime()
+{
+  const vtkMTimeType mtime = this->Superclass::GetMTime();
+  const vtkMTimeType matrixTime = this->Matrix->GetMTime();
+  return matrixTime > this->MatrixWrittenTime ? std::max(mtime, matrixTime) : mtime;
+}
+
+//------------------------------------------------------------------------------
 void vtkLogTransform::InternalUpdate()
 {
-  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(this->Matrix->GetData()) =
-    this->Internal->Matrix;
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> matrix(this->Matrix->GetData());
+  if (this->Matrix->GetMTime() > this->MatrixWrittenTime && matrix != this->Internal->Matrix)
+  {
+    // vtkTransform adopts such a change (its deprecated "legacy hack"); here the coordinates,
+    // the inverse and every operation would keep the old map while TransformPoint used the new.
+    vtkWarningMacro(<< "the matrix was changed directly (GetMatrix()->SetElement or alike); a "
+                       "vtkLogTransform's state is its log coordinates, so their matrix is put "
+                       "back: use SetMatrix to change the transform.");
+  }
+  matrix = this->Internal->Matrix;
   this->Matrix->Modified();
+  this->MatrixWrittenTime = this->Matrix->GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -469,6 +488,11 @@ void vtkLogTransform::InternalDeepCopy(vtkAbstractTransform* transform)
   auto* other = static_cast<vtkLogTransform*>(transform);
   *this->Internal = *other->Internal;
   this->Parametrisation = other->Parametrisation;
+  // The superclass copied the other's matrix: written by this class, not changed from outside.
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(this->Matrix->GetData()) =
+    this->Internal->Matrix;
+  this->Matrix->Modified();
+  this->MatrixWrittenTime = this->Matrix->GetMTime();
 }
 
 //------------------------------------------------------------------------------

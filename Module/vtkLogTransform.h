@@ -54,6 +54,8 @@ class vtkCollection;
 class vtkDoubleArray;
 class vtkMatrix4x4;
 
+#include <atomic> // for std::atomic
+
 class VTKLCT_EXPORT vtkLogTransform : public vtkLinearTransform
 {
 public:
@@ -163,6 +165,14 @@ public:
 
   vtkAbstractTransform* MakeTransform() override;
 
+  /**
+   * Also the time of a change made to GetMatrix() from outside (e.g. GetMatrix()->SetElement):
+   * the state is the log coordinates, so the next Update() puts their matrix back, with a
+   * warning, rather than leave TransformPoint and the inverse describing different maps. Use
+   * SetMatrix to change the transform.
+   */
+  vtkMTimeType GetMTime() override;
+
 protected:
   vtkLogTransform();
   ~vtkLogTransform() override;
@@ -190,6 +200,8 @@ private:
   struct State;
   State* Internal;
   int Parametrisation = POLAR;
+  /// The matrix's MTime when InternalUpdate last wrote it: a later one is a change from outside.
+  std::atomic<vtkMTimeType> MatrixWrittenTime{ 0 };
 };
 
 #endif

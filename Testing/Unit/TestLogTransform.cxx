@@ -477,3 +477,36 @@ TEST(vtkLogTransform, MatrixLogCoordinatesBeyondItsRangeSayWhyAndPointToPolar)
   EXPECT_EQ(w.transform->SetLogCoordinates(huge), 0);
   EXPECT_NE(w.errors->Last.find("range of double precision"), std::string::npos) << w.errors->Last;
 }
+
+// Audit (session 29): a change made to GetMatrix() from outside (SetElement) was used by
+// TransformPoint while the log coordinates, the inverse and every operation kept the old map. The
+// next Update puts the state's matrix back, with a warning.
+TEST(vtkLogTransform, AMatrixChangedFromOutsideIsPutBackWithAWarning)
+{
+  vtkNew<vtkTransform> turn;
+  turn->Translate(1, 2, 3);
+  turn->RotateZ(30);
+  vtkNew<vtkLogTransform> t;
+  vtkNew<ErrorCounter> warnings;
+  t->AddObserver(vtkCommand::WarningEvent, warnings);
+  ASSERT_EQ(t->SetMatrix(turn->GetMatrix()), 1);
+  double p[3];
+  t->TransformPoint(Eigen::Vector3d::Zero().eval().data(), p);
+  EXPECT_EQ(warnings->Count, 0);
+  t->GetMatrix()->SetElement(0, 3, std::numeric_limits<double>::quiet_NaN());
+  t->TransformPoint(Eigen::Vector3d::Zero().eval().data(), p);
+  EXPECT_EQ(p[0], 1.0);
+  EXPECT_EQ(warnings->Count, 1);
+  EXPECT_NE(warnings->Last.find("use SetMatrix"), std::string::npos) << warnings->Last;
+  // Its own updates, DeepCopy and the inverse raise nothing.
+  vtkNew<vtkLogTransform> copy;
+  copy->AddObserver(vtkCommand::WarningEvent, warnings);
+  copy->DeepCopy(t);
+  copy->Update();
+  t->Inverse();
+  t->Update();
+  t->GetLinearInverse()->Update();
+  ASSERT_EQ(t->Scale(0.5), 1);
+  t->Update();
+  EXPECT_EQ(warnings->Count, 1) << warnings->Last;
+}
