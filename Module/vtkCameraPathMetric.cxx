@@ -80,6 +80,20 @@ int vtkCameraPathMetric::AddKeyCamera(double t, vtkCamera* camera)
     vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": " << problem << "; keys unchanged.");
     return 0;
   }
+  for (const auto& [time, key] : this->Segments->Keys)
+  {
+    // The samples are projected with the keys' kind of view angle (vtkCameraInterpolator does
+    // not set it): keys of both kinds have no one kind to measure the path with.
+    if (time != t && key->GetUseHorizontalViewAngle() != camera->GetUseHorizontalViewAngle())
+    {
+      vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": a key whose view angle is "
+                    << (camera->GetUseHorizontalViewAngle() ? "horizontal" : "vertical")
+                    << " (UseHorizontalViewAngle) cannot be mixed with keys whose view angle is "
+                    << (key->GetUseHorizontalViewAngle() ? "horizontal" : "vertical")
+                    << "; keys unchanged.");
+      return 0;
+    }
+  }
   auto copy = vtkSmartPointer<vtkCamera>::New();
   copy->DeepCopy(camera);
   this->Segments->Keys[t] = copy;
@@ -168,6 +182,9 @@ int vtkCameraPathMetric::MeasureSegments(
   }
   // The path's cameras at n samples per segment (both keys included).
   vtkNew<vtkCamera> camera;
+  // vtkCameraInterpolator leaves the flag as the camera had it: the keys' kind, as a user renders
+  // with (vtkCameraInterpolatorLCT sets it from its keys).
+  camera->SetUseHorizontalViewAngle(keys.begin()->second->GetUseHorizontalViewAngle());
   const auto sampleSegments = [&](int n) {
     views.clear();
     projections.clear();
