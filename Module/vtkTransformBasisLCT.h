@@ -17,9 +17,10 @@
  * the nearest transform in the span ("constraining a transform").
  *
  * The inner product is Alexa's entry-wise product of the 4x4 log matrices (eq. 8); for rotation
- * vectors it is twice their dot product, so the factors (x, y, z) of R(a, theta) on the basis
- * R_x(phi), R_y(phi), R_z(phi) are 2 phi theta a: the angle is |(x, y, z)| / (2 phi) (the paper's
- * "(x + y + z) / phi" is a misprint). See lct/LogBasis.h for the formulas.
+ * vectors it is twice their dot product, so the inner products of R(a, theta) with the basis
+ * R_x(phi), R_y(phi), R_z(phi) are 2 phi theta a, and Factor's coefficients x (those inner
+ * products through the inverse Gram matrix, 2 phi^2 I) are theta / phi a: the axis is x / |x| and
+ * the angle phi |x| (the paper's "(x + y + z) / phi" is a misprint). See lct/LogBasis.h.
  *
  * The basis is analysed by an SVD: its rank (singular values above RankTolerance times the
  * largest) and the condition number of its Gram matrix are reported. A rank-deficient basis is

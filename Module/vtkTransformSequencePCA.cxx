@@ -133,6 +133,9 @@ int vtkTransformSequencePCA::AddFrame(vtkCollection* transforms)
 void vtkTransformSequencePCA::RemoveAllFrames()
 {
   *this->Internal = Internals();
+  // The header promises the root channel goes with the frames: kept, it silently factored a
+  // channel of the next sequence out.
+  this->RootChannel = -1;
   this->Modified();
 }
 

@@ -24,9 +24,10 @@
  * i.e. W = diag(1, 1, 1, sqrt2, sqrt2, sqrt2, 1, 1, 1, sqrt2, sqrt2, sqrt2). The same formula is
  * used for the Polar coordinates (l, w, Y) (the matrix [hat(w) + Y, l; 0 0] of Kaji & Ochiai's
  * R^12). For rotations, <log R(a, theta), log R(b, phi)> = 2 theta phi (a . b): twice the dot
- * product of the rotation vectors. With Alexa's basis R_x(phi), R_y(phi), R_z(phi), the
- * factors (x, y, z) of R(a, theta) are therefore 2 phi theta a: the axis is (x, y, z) / |(x, y, z)|
- * and the angle |(x, y, z)| / (2 phi) (the paper prints "(x + y + z) / phi", a misprint).
+ * product of the rotation vectors. With Alexa's basis R_x(phi), R_y(phi), R_z(phi), the inner
+ * products of R(a, theta) with the basis are therefore 2 phi theta a, and its coefficients x
+ * (through the inverse Gram matrix, 2 phi^2 I) theta / phi a: the axis is x / |x| and the angle
+ * phi |x| (the paper prints "(x + y + z) / phi", a misprint).
  *
  * A basis has at most 12 independent vectors (the dimension of the log space), so every size
  * here is fixed at compile time and nothing allocates.

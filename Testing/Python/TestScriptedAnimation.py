@@ -51,6 +51,20 @@ class ScriptedAnimation(unittest.TestCase):
         self.assertGreater(differing, 100)
         self.assertGreater(max(c[0] for c in centers), 0.25)
 
+    def test_an_unanswered_display_is_exit_125_not_an_abort(self):
+        # Audit (session 29): with DISPLAY set but no X server answering, VTK 9.1's render
+        # window called abort() (exit 134); the example asks Xlib first.
+        import subprocess
+        env = dict(os.environ, DISPLAY=":87")
+        out = tempfile.mkdtemp(prefix="lct-nodisplay-")
+        result = subprocess.run(
+            [sys.executable, os.path.join(os.environ.get("LCT_SOURCE_DIR", ""), "Examples",
+                                          "ScriptedAnimation.py"), out, "3"],
+            env=env, capture_output=True, text=True, timeout=120)
+        self.assertEqual(result.returncode, 125, result.stderr)
+        self.assertIn("no server answers", result.stderr)
+        self.assertEqual(os.listdir(out), [])
+
     def test_path_metric_of_the_flight(self):
         metric = vtkCameraPathMetric()
         sphere = vtkSphereSource()

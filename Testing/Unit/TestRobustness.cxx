@@ -1217,3 +1217,25 @@ TEST(Robustness, LinearCombinationWithANullArgumentIsAnError)
   EXPECT_TRUE(contains(errors->Last, "null transforms")) << errors->Last;
   EXPECT_EQ(result->GetMTime(), mtime);
 }
+
+// Audit (session 29): vtkTransformSequencePCA::RemoveAllFrames kept the root channel its header
+// says goes with the frames, so the next sequence had a channel silently factored out.
+TEST(Robustness, SequencePCARemoveAllFramesForgetsTheRootChannel)
+{
+  vtkNew<vtkTransformSequencePCA> pca;
+  for (int f = 0; f < 5; ++f)
+  {
+    vtkNew<vtkCollection> frame;
+    for (int c = 0; c < 3; ++c)
+    {
+      vtkNew<vtkTransform> t;
+      t->RotateWXYZ((10.0 + c) * f, c == 0, c == 1, c == 2);
+      frame->AddItem(t);
+    }
+    ASSERT_EQ(pca->AddFrame(frame), 1);
+  }
+  pca->SetRootChannel(2);
+  ASSERT_EQ(pca->Compute(), 1);
+  pca->RemoveAllFrames();
+  EXPECT_EQ(pca->GetRootChannel(), -1);
+}
