@@ -2297,6 +2297,18 @@ inline void CheckPly(MeshText& text)
         text.FailAt("the first element is \"" + Printable(e.Name) +
           "\", not \"vertex\" (vtkPLYReader reads only files whose vertex element comes first)");
       }
+      // It reads the first vertex element (the checks below took the last), and in ASCII it reads
+      // the lines of any other element before the faces as faces (an edge element: a polygon
+      // without points, on which GetCell crashes).
+      const bool faceSeen = std::any_of(
+        elements.begin(), elements.end(), [](const Element& seen) { return seen.Name == "face"; });
+      if (!elements.empty() && !faceSeen && e.Name != "face")
+      {
+        text.Rewind();
+        text.FailAt("element \"" + Printable(e.Name) +
+          "\" comes between the vertex and face elements (vtkPLYReader reads only one vertex "
+          "element, followed by the faces; other elements may come after them)");
+      }
       const long long limit = e.Name == "vertex" ? Limits::MaxMeshPoints : Limits::MaxMeshCells;
       if (!ParseInteger(w[2], 0, limit, e.Count))
       {
