@@ -139,25 +139,18 @@ std::string FileKind(mode_t mode)
 /// take a new file, so that the work is not done for a write that must fail.
 bool OutputTarget(const fs::path& output, fs::path& target, std::string& why)
 {
-  target = output;
+  target = lct::outputTarget(output);
   struct stat s;
-  int links = 0;
-  int found = 0;
-  while ((found = ::lstat(target.c_str(), &s)) == 0 && S_ISLNK(s.st_mode))
+  const int found = ::lstat(target.c_str(), &s);
+  if (found == 0 && S_ISLNK(s.st_mode))
   {
-    std::error_code error;
-    const fs::path to = fs::read_symlink(target, error);
-    if (error || ++links > 40)
-    {
-      why = "cannot write " + output.string() + ": " +
-        (error ? error.message() : std::string(std::strerror(ELOOP)));
-      return false;
-    }
-    target = to.is_absolute() ? to : target.parent_path() / to;
+    // outputTarget leaves a loop, or a chain of more than 40 links, where it starts.
+    why = "cannot write " + output.string() + ": " + std::strerror(ELOOP);
+    return false;
   }
   const int statError = found == 0 ? 0 : errno;
   const std::string name =
-    links == 0 ? output.string() : output.string() + " (a link to " + target.string() + ")";
+    target == output ? output.string() : output.string() + " (a link to " + target.string() + ")";
   if (found == 0)
   {
     if (!S_ISREG(s.st_mode))

@@ -440,10 +440,13 @@ int vtkProbeDeformerLCT::RequestData(
     // its linear part L_c L_r^-1 comes from exact minors where L_r is ill-conditioned (the plain
     // product with the inverse cancels: 8 % off at condition 1e15, 2e-4 at 1e13), and its
     // translation is t_c - A t_r.
-    Eigen::Matrix4d a = lct::worldStep(rest, current);
-    a.topRightCorner<3, 1>() =
-      current.topRightCorner<3, 1>() - a.topLeftCorner<3, 3>() * rest.topRightCorner<3, 1>();
-    relative[i] = current == rest ? Eigen::Matrix4d::Identity() : a;
+    relative[i] = Eigen::Matrix4d::Identity();
+    if (current != rest)
+    {
+      relative[i] = lct::worldStep(rest, current);
+      relative[i].topRightCorner<3, 1>() = current.topRightCorner<3, 1>() -
+        relative[i].topLeftCorner<3, 3>() * rest.topRightCorner<3, 1>();
+    }
     centres[i] = rest.topRightCorner<3, 1>();
     radii[i] = p.Radius;
     if (!references.empty())
