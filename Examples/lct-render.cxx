@@ -346,14 +346,7 @@ fs::path OutputTarget(const fs::path& file)
 /// device or a socket, which a write must not replace; else "".
 std::string NotARegularFile(const fs::path& file)
 {
-  const fs::path target = OutputTarget(file);
-  struct stat s;
-  if (::lstat(target.c_str(), &s) != 0 || S_ISREG(s.st_mode))
-  {
-    return "";
-  }
-  return file.string() + (target == file ? "" : " (a link to " + target.string() + ")") +
-    " exists and is not a regular file";
+  return lct::notARegularFile(file);
 }
 
 /// A file being written under a temporary name next to its final name (or, when that is a

@@ -28,15 +28,25 @@ std::filesystem::path outputTarget(const std::filesystem::path& name)
   return target;
 }
 
+std::string notARegularFile(const std::filesystem::path& name)
+{
+  const std::filesystem::path target = outputTarget(name);
+  struct stat s;
+  if (::lstat(target.c_str(), &s) != 0 || S_ISREG(s.st_mode))
+  {
+    return "";
+  }
+  return name.string() + (target == name ? "" : " (a link to " + target.string() + ")") +
+    " exists and is not a regular file";
+}
+
 bool writeFileAtomically(
   const std::filesystem::path& name, const std::string& bytes, std::string& why)
 {
   const std::filesystem::path target = outputTarget(name);
-  struct stat s;
-  if (::lstat(target.c_str(), &s) == 0 && !S_ISREG(s.st_mode))
+  why = notARegularFile(name);
+  if (!why.empty())
   {
-    why = name.string() + (target == name ? "" : " (a link to " + target.string() + ")") +
-      " exists and is not a regular file";
     return false;
   }
   std::string temporary;

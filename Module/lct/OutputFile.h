@@ -23,6 +23,11 @@ namespace lct
 /// more than 40 is left as it is, and then is not a regular file).
 VTKLCT_EXPORT std::filesystem::path outputTarget(const std::filesystem::path& name);
 
+/// "NAME exists and is not a regular file" (with " (a link to TARGET)" after NAME when a link
+/// leads there) when outputTarget(name) is a directory, a FIFO, a device or a socket, which a
+/// write must not replace; else "".
+VTKLCT_EXPORT std::string notARegularFile(const std::filesystem::path& name);
+
 /// Writes `bytes` to outputTarget(name) through a new temporary beside it (created exclusively,
 /// under an unforeseeable name), renamed over it when complete. False, with `why` naming the
 /// cause (and nothing left behind), when the target exists and is not a regular file, or when
