@@ -51,7 +51,8 @@ struct vtkTransformSequencePCA::Internals
   bool HasAnalysis = false;
   vtkTimeStamp ComputeTime;
   lct::SequencePCA Pca;
-  std::vector<int> Slot; // channel -> channel of Pca, or -1 for the root
+  std::vector<int> Slot;                            // channel -> channel of Pca, or -1 for the root
+  lct::LogCoords RootMean = lct::LogCoords::Zero(); // mean log of the root channel, if any
 
   int Frames() const
   {
@@ -247,14 +248,17 @@ int vtkTransformSequencePCA::Compute()
     }
   }
   std::vector<lct::LogCoords> logs(static_cast<std::size_t>(frames) * analysed);
+  std::vector<lct::LogCoords> channelLogs(static_cast<std::size_t>(frames));
+  lct::LogCoords rootMean = lct::LogCoords::Zero();
   for (int c = 0; c < in.Channels; ++c)
   {
-    const int s = slot[static_cast<std::size_t>(c)];
-    if (s < 0)
+    // The root channel is not analysed, but its logs are taken here all the same, with the same
+    // checks: GetMeanTransform returns their mean, and a root that has no log (a MatrixLog half
+    // turn) or crosses 180 degrees must fail here, not after Compute reported success.
+    const bool root = c == this->RootChannel;
+    for (int f = 0; f < frames; ++f)
     {
-      // The root channel is kept as it is, not analysed: it must be a valid transform all the
-      // same, or GetReconstructedTransform would hand back what no log accepts (A5).
-      for (int f = 0; f < frames; ++f)
+      if (root)
       {
         const lct::Status valid = lct::validateAffine(in.At(f, c));
         if (valid != lct::Status::Ok)
@@ -264,30 +268,36 @@ int vtkTransformSequencePCA::Compute()
           return 0;
         }
       }
-      continue;
-    }
-    for (int f = 0; f < frames; ++f)
-    {
-      lct::LogCoords* previous =
-        f > 0 ? &logs[static_cast<std::size_t>(f - 1) * analysed + s] : nullptr;
+      lct::LogCoords* previous = f > 0 ? &channelLogs[static_cast<std::size_t>(f - 1)] : nullptr;
       const auto log =
         lct::logarithm(in.At(f, c), p, p == lct::Parametrisation::Polar ? previous : nullptr);
       if (!log)
       {
-        vtkErrorMacro(<< "Compute: frame " << f << ", channel " << c << ": "
-                      << lct::describe(log.status) << lct::adviceFor(log.status, p) << ".");
+        vtkErrorMacro(<< "Compute: frame " << f << ", " << (root ? "root channel " : "channel ")
+                      << c << ": " << lct::describe(log.status) << lct::adviceFor(log.status, p)
+                      << ".");
         return 0;
       }
       if (p == lct::Parametrisation::MatrixLog && previous &&
         (lct::rotationPart(log.value) - lct::rotationPart(*previous)).norm() > kBranchJump)
       {
-        vtkErrorMacro(<< "Compute: channel " << c << " turns through 180 degrees between frames "
-                      << f - 1 << " and " << f
+        vtkErrorMacro(<< "Compute: " << (root ? "root channel " : "channel ") << c
+                      << " turns through 180 degrees between frames " << f - 1 << " and " << f
                       << ", where the principal matrix log jumps by 2 pi (use the Polar "
                          "parametrisation, which keeps the logs continuous).");
         return 0;
       }
-      logs[static_cast<std::size_t>(f) * analysed + s] = log.value;
+      channelLogs[static_cast<std::size_t>(f)] = log.value;
+    }
+    if (root)
+    {
+      rootMean = lct::meanLog(channelLogs.data(), channelLogs.size());
+      continue;
+    }
+    const int s = slot[static_cast<std::size_t>(c)];
+    for (int f = 0; f < frames; ++f)
+    {
+      logs[static_cast<std::size_t>(f) * analysed + s] = channelLogs[static_cast<std::size_t>(f)];
     }
   }
   auto pca = lct::sequencePCA(
@@ -299,6 +309,7 @@ int vtkTransformSequencePCA::Compute()
   }
   in.Pca = std::move(pca.value);
   in.Slot = std::move(slot);
+  in.RootMean = rootMean;
   in.HasAnalysis = true;
   in.ComputeTime.Modified();
   return 1;
@@ -467,22 +478,8 @@ int vtkTransformSequencePCA::GetMeanTransform(int channel, vtkMatrix4x4* result)
   {
     return this->Output(in.Pca.means[static_cast<std::size_t>(slot)].data(), result, caller);
   }
-  // The root: the mean of its Polar / matrix logs, continuous in time as for the others.
-  const lct::Parametrisation p = toCore(this->Parametrisation);
-  std::vector<lct::LogCoords> logs;
-  for (int f = 0; f < in.Frames(); ++f)
-  {
-    const auto log = lct::logarithm(in.At(f, channel), p, logs.empty() ? nullptr : &logs.back());
-    if (!log)
-    {
-      vtkErrorMacro(<< caller << ": frame " << f
-                    << " of the root channel: " << lct::describe(log.status) << ".");
-      return 0;
-    }
-    logs.push_back(log.value);
-  }
-  const lct::LogCoords mean = lct::meanLog(logs.data(), logs.size());
-  return this->Output(mean.data(), result, caller);
+  // The root: the mean of its logs, taken (continuous in time) by Compute.
+  return this->Output(in.RootMean.data(), result, caller);
 }
 
 //------------------------------------------------------------------------------

@@ -299,6 +299,60 @@ TEST(SequencePCA, SpinBeyond180DegreesNeedsContinuousLogs)
   EXPECT_EQ(matrixLog.pca->GetNumberOfComponents(), 0);
 }
 
+// The root channel is not analysed, but its mean is a log all the same: a MatrixLog root that
+// turns through 180 degrees (or sits at a half turn, which has no principal log) passed Compute
+// and failed only later, in GetMeanTransform. Polar's continuous logs give the mean of a spin.
+TEST(SequencePCA, RootChannelLogsAreCheckedByCompute)
+{
+  const int frames = 100, channels = 2;
+  RandomTransforms random(36);
+  std::vector<Eigen::Matrix4d> all;
+  for (int f = 0; f < frames; ++f)
+  {
+    Eigen::Matrix4d root = Eigen::Matrix4d::Identity();
+    root.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd(4.0 * kPi * f / (frames - 1), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    root(0, 3) = 0.01 * f;
+    all.push_back(root);
+    all.push_back(random.Affine(lct_test::TransformClass::GeneralAffine));
+  }
+  Watched matrixLog;
+  matrixLog.pca->SetParametrisationToMatrixLog();
+  matrixLog.Load(all, frames, channels);
+  matrixLog.pca->SetRootChannel(0);
+  EXPECT_EQ(matrixLog.pca->Compute(), 0);
+  EXPECT_NE(matrixLog.errors->Last.find("root channel 0 turns through 180 degrees between frames "
+                                        "24 and 25"),
+    std::string::npos)
+    << matrixLog.errors->Last;
+  vtkNew<vtkMatrix4x4> m;
+  EXPECT_EQ(matrixLog.pca->GetMeanTransform(0, m), 0);
+
+  // A root at exactly a half turn: no principal matrix log at all.
+  std::vector<Eigen::Matrix4d> halfTurn(all.begin(), all.begin() + 2 * channels);
+  halfTurn[static_cast<std::size_t>(channels)].topLeftCorner<3, 3>() =
+    Eigen::Vector3d(-1.0, -1.0, 1.0).asDiagonal();
+  Watched atHalfTurn;
+  atHalfTurn.pca->SetParametrisationToMatrixLog();
+  atHalfTurn.Load(halfTurn, 2, channels);
+  atHalfTurn.pca->SetRootChannel(0);
+  EXPECT_EQ(atHalfTurn.pca->Compute(), 0);
+  EXPECT_NE(atHalfTurn.errors->Last.find("frame 1, root channel 0: "), std::string::npos)
+    << atHalfTurn.errors->Last;
+
+  // Polar: logs continuous in time, so the mean of two whole turns is the turn 2 pi (identity)
+  // with the mean translation.
+  Watched polar;
+  polar.Load(all, frames, channels);
+  polar.pca->SetRootChannel(0);
+  ASSERT_EQ(polar.pca->Compute(), 1);
+  ASSERT_EQ(polar.pca->GetMeanTransform(0, m), 1);
+  Eigen::Matrix4d expected = Eigen::Matrix4d::Identity();
+  expected(0, 3) = 0.01 * (frames - 1) / 2.0;
+  EXPECT_LE((fromVtk(m) - expected).cwiseAbs().maxCoeff(), 1e-12) << fromVtk(m);
+  EXPECT_EQ(polar.errors->Count, 0);
+}
+
 TEST(SequencePCA, RootChannelIsFactoredOutAndEigenMotionsAreTransforms)
 {
   RandomTransforms random(34);
