@@ -130,6 +130,18 @@ void vtkInterpolatorCueLCT::Initialize()
 }
 
 //------------------------------------------------------------------------------
+void vtkInterpolatorCueLCT::StartCueInternal()
+{
+  if (this->Internal->CameraPath && !this->Internal->Camera)
+  {
+    vtkErrorMacro(<< "StartCueInternal: the cue has a camera interpolator but no camera "
+                     "(SetCamera, e.g. the renderer's active camera): the camera path is not "
+                     "played.");
+  }
+  this->Superclass::StartCueInternal();
+}
+
+//------------------------------------------------------------------------------
 double vtkInterpolatorCueLCT::KeyTime(double cueTime, double minimumT, double maximumT)
 {
   if (!this->HasValidTimes(cueTime))
@@ -219,6 +231,11 @@ void vtkInterpolatorCueLCT::TickInternal(double currenttime, double deltatime, d
     {
       RefitClippingRange(in.Renderer, in.Camera);
     }
+  }
+  else if (in.Camera && in.Renderer && !in.Props.empty())
+  {
+    // A still camera watching moving props: its clipping range follows them all the same.
+    RefitClippingRange(in.Renderer, in.Camera);
   }
   this->Superclass::TickInternal(currenttime, deltatime, clocktime);
 }

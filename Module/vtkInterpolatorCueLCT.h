@@ -42,7 +42,9 @@ public:
 
   ///@{
   /**
-   * The camera to drive and its path. Either may be null (no camera animation).
+   * The camera to drive and its path. Both null: no camera animation. A path without a camera is
+   * reported with an error when the cue starts (StartCueInternal) and not played; a camera
+   * without a path stays still (its clipping range is still refitted when a renderer is set).
    */
   void SetCamera(vtkCamera* camera);
   vtkCamera* GetCamera();
@@ -62,7 +64,8 @@ public:
   ///@{
   /**
    * When set, the clipping range of the cue's camera is refitted to the renderer's visible props
-   * after the props and then the camera move (vtkRenderer::ResetCameraClippingRange; when the
+   * after the props and then the camera move (also for a camera without a path, when the cue
+   * moves props) (vtkRenderer::ResetCameraClippingRange; when the
    * cue's camera is not the renderer's active camera it is made active for the fit, and the
    * active camera put back). Default null: the interpolated range is kept.
    */
@@ -110,6 +113,7 @@ protected:
   ~vtkInterpolatorCueLCT() override;
 
   void TickInternal(double currenttime, double deltatime, double clocktime) override;
+  void StartCueInternal() override;
 
   int KeyTimeMapping = KEY_TIME_MAPPING_RANGE;
 

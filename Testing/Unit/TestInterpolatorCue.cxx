@@ -266,7 +266,8 @@ TEST(InterpolatorCueLCT, CueTimesOutsideTheCueMapToTheRangesEnds)
 // Audit (session 29): the cue refitted the clipping range right after moving the camera and
 // before moving the props, so a prop moving away was clipped out of the frame (at t = 0.5 the
 // range was [9.2, 11.7] with the prop 60 away); and the refit acted on the renderer's active
-// camera even when the cue drove another one, which kept its stale range.
+// camera even when the cue drove another one, which kept its stale range. A camera without a path
+// (props moving in front of a still camera) had no refit at all.
 TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCamera)
 {
   vtkNew<vtkCameraInterpolatorLCT> cameraPath;
@@ -281,8 +282,10 @@ TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCam
   far->Translate(0, 0, -100);
   ASSERT_EQ(propPath->AddTransform(0.0, near), 1);
   ASSERT_EQ(propPath->AddTransform(1.0, far), 1);
-  for (const bool activeCamera : { true, false })
+  for (const int variant : { 0, 1, 2 })
   {
+    const bool activeCamera = variant != 1;
+    const bool cameraMoves = variant != 2;
     vtkNew<UnitBoxMapper> mapper;
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
@@ -300,7 +303,14 @@ TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCam
     cue->SetStartTime(0.0);
     cue->SetEndTime(1.0);
     cue->SetCamera(camera);
-    cue->SetCameraInterpolator(cameraPath);
+    if (cameraMoves)
+    {
+      cue->SetCameraInterpolator(cameraPath);
+    }
+    else
+    {
+      camera->SetClippingRange(1.0, 5.0); // fits the box at the start only
+    }
     cue->SetRenderer(renderer);
     ASSERT_EQ(cue->AddProp(actor, propPath), 1);
     vtkNew<vtkAnimationScene> scene;
@@ -329,7 +339,7 @@ TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCam
     });
     cue->AddObserver(vtkCommand::AnimationCueTickEvent, check);
     scene->Play();
-    EXPECT_GE(ticks, 4) << activeCamera;
+    EXPECT_GE(ticks, 4) << variant;
     EXPECT_EQ(renderer->GetActiveCamera() == camera, activeCamera);
     if (!activeCamera)
     {
@@ -337,4 +347,32 @@ TEST(InterpolatorCueLCT, ClippingRangeIsRefittedToThePropsOfThisTickOnTheCuesCam
       EXPECT_EQ(renderer->GetActiveCamera()->GetClippingRange()[1], activeRange[1]);
     }
   }
+}
+
+// Audit (session 29): a cue given a camera path but no camera played nothing and said nothing.
+TEST(InterpolatorCueLCT, ACameraPathWithoutACameraIsReportedWhenTheCueStarts)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCamera> key;
+  ASSERT_EQ(path->AddCamera(0.0, key), 1);
+  ASSERT_EQ(path->AddCamera(1.0, key), 1);
+  vtkNew<vtkInterpolatorCueLCT> cue;
+  vtkNew<lct_test::ErrorCounter> errors;
+  cue->AddObserver(vtkCommand::ErrorEvent, errors);
+  cue->SetCameraInterpolator(path);
+  vtkNew<vtkAnimationScene> scene;
+  scene->SetModeToSequence();
+  scene->SetFrameRate(4);
+  scene->SetStartTime(0.0);
+  scene->SetEndTime(1.0);
+  scene->AddCue(cue);
+  scene->Play();
+  EXPECT_EQ(errors->Count, 1); // once per run, not once per tick
+  EXPECT_NE(errors->Last.find("camera interpolator but no camera"), std::string::npos)
+    << errors->Last;
+  // With its camera the same cue plays without a word.
+  vtkNew<vtkCamera> camera;
+  cue->SetCamera(camera);
+  scene->Play();
+  EXPECT_EQ(errors->Count, 1);
 }
