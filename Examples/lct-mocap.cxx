@@ -41,6 +41,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -702,6 +703,9 @@ bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height
 
 int main(int argc, char* argv[])
 {
+  // A file-size limit (ulimit -f) must fail the write (EFBIG: reported, the temporary removed),
+  // not end the process with SIGXFSZ and leave the temporary behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   Arguments args;
   const std::string usageError = Parse(argc, argv, args);
   if (args.command == "-h" || args.command == "--help")

@@ -7,12 +7,17 @@
 #              LCT_OUT/fifo a FIFO, LCT_OUT/link a symbolic link to it, both kept)
 #   LCT_EXIT   (error) the exit code      LCT_EXPECT (error) a phrase of the output
 #   LCT_ABSENT (error, optional) a phrase the output must not hold
+#   LCT_FSIZE  (error, optional) file-size limit for the run, in 512-byte blocks (sh's ulimit -f)
 # After an error nothing may be left in LCT_OUT but what the setup wrote: no output, no .part.
 cmake_minimum_required(VERSION 3.22)
 
 function(lct_run)
+  set(command "${LCT_MOCAP}" ${ARGN})
+  if (DEFINED LCT_RUN_FSIZE)
+    set(command sh -c "ulimit -f ${LCT_RUN_FSIZE} && exec \"$0\" \"$@\"" ${command})
+  endif ()
   execute_process(
-    COMMAND "${LCT_MOCAP}" ${ARGN}
+    COMMAND ${command}
     RESULT_VARIABLE rc
     OUTPUT_VARIABLE out
     ERROR_VARIABLE  err)
@@ -111,7 +116,11 @@ elseif (LCT_MODE STREQUAL "error")
   string(REPLACE "|" ";" args "${LCT_ARGS}")
   string(REPLACE "@OUT@" "${LCT_OUT}" args "${args}")
   string(REPLACE "@DATA@" "${LCT_DATA}" args "${args}")
+  if (DEFINED LCT_FSIZE)
+    set(LCT_RUN_FSIZE "${LCT_FSIZE}")
+  endif ()
   lct_run(${args})
+  unset(LCT_RUN_FSIZE)
   if (NOT rc EQUAL LCT_EXIT)
     message(FATAL_ERROR "exit code ${rc}, expected ${LCT_EXIT}")
   endif ()
