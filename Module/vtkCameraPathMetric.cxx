@@ -41,6 +41,19 @@ Eigen::Matrix4d toEigen(vtkMatrix4x4* m)
   return Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m->GetData());
 }
 
+/// The time `k / n` of the way from `t0` to `t1`; finite for any finite ends (t1 - t0 overflows
+/// beyond the double range: t0 = -1e308, t1 = 1e308).
+double timeBetween(double t0, double t1, int k, int n)
+{
+  const double span = t1 - t0;
+  if (std::isfinite(span))
+  {
+    return t0 + span * k / n;
+  }
+  const double u = static_cast<double>(k) / n;
+  return (1.0 - u) * t0 + u * t1;
+}
+
 /// Why a camera cannot be measured (the checks of vtkCameraInterpolatorLCT::AddCamera: NaN,
 /// position at the focal point, view up along the view direction, ...), or null: a degenerate
 /// camera's view matrix has zero rows and gives any excess at all.
@@ -82,9 +95,23 @@ int vtkCameraPathMetric::AddKeyCamera(double t, vtkCamera* camera)
   }
   for (const auto& [time, key] : this->Segments->Keys)
   {
-    // The samples are projected with the keys' kind of view angle (vtkCameraInterpolator does
-    // not set it): keys of both kinds have no one kind to measure the path with.
-    if (time != t && key->GetUseHorizontalViewAngle() != camera->GetUseHorizontalViewAngle())
+    // The samples are projected with the keys' projection and kind of view angle
+    // (vtkCameraInterpolator sets neither): keys of both kinds have no one kind to measure the
+    // path with (vtkCameraInterpolatorLCT refuses such keys too).
+    if (time == t)
+    {
+      continue;
+    }
+    if (key->GetParallelProjection() != camera->GetParallelProjection())
+    {
+      vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": a "
+                    << (camera->GetParallelProjection() ? "parallel" : "perspective")
+                    << " key cannot be mixed with "
+                    << (key->GetParallelProjection() ? "parallel" : "perspective")
+                    << " keys (ParallelProjection); keys unchanged.");
+      return 0;
+    }
+    if (key->GetUseHorizontalViewAngle() != camera->GetUseHorizontalViewAngle())
     {
       vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": a key whose view angle is "
                     << (camera->GetUseHorizontalViewAngle() ? "horizontal" : "vertical")
@@ -182,8 +209,10 @@ int vtkCameraPathMetric::MeasureSegments(
   }
   // The path's cameras at n samples per segment (both keys included).
   vtkNew<vtkCamera> camera;
-  // vtkCameraInterpolator leaves the flag as the camera had it: the keys' kind, as a user renders
-  // with (vtkCameraInterpolatorLCT sets it from its keys).
+  // vtkCameraInterpolator leaves the projection and the kind of view angle as the camera had
+  // them: the keys' kinds, as a user renders with (vtkCameraInterpolatorLCT sets both from its
+  // keys). A fresh camera is perspective: parallel keys' paths were measured in perspective.
+  camera->SetParallelProjection(keys.begin()->second->GetParallelProjection());
   camera->SetUseHorizontalViewAngle(keys.begin()->second->GetUseHorizontalViewAngle());
   const auto sampleSegments = [&](int n) {
     views.clear();
@@ -194,7 +223,7 @@ int vtkCameraPathMetric::MeasureSegments(
       for (int s = 0; s < n; ++s)
       {
         // The ends exactly at the pass times (no rounding of t0 + (t1 - t0) * 1).
-        const double t = s == n - 1 ? pass[k + 1] : pass[k] + (pass[k + 1] - pass[k]) * s / (n - 1);
+        const double t = s == n - 1 ? pass[k + 1] : timeBetween(pass[k], pass[k + 1], s, n - 1);
         if (!sample(t, it, next, camera.Get()))
         {
           vtkErrorMacro(<< caller << ": the path failed at t = " << t << "; results unchanged.");
@@ -509,7 +538,7 @@ int vtkCameraPathMetric::EvaluateInterpolator(vtkCameraInterpolatorLCT* path, do
   vtkNew<vtkCamera> camera; // one camera, re-used: memory does not grow with the samples
   for (int k = 0; k < this->NumberOfSamples; ++k)
   {
-    const double t = t0 + (t1 - t0) * k / (this->NumberOfSamples - 1);
+    const double t = timeBetween(t0, t1, k, this->NumberOfSamples - 1);
     if (!path->InterpolateCamera(t, camera))
     {
       vtkErrorMacro(<< "EvaluateInterpolator: the path failed at t = " << t

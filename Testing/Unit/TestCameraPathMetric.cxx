@@ -327,3 +327,72 @@ TEST(CameraPathMetric, HorizontalViewAngleKeysAreMeasuredWithTheirOwnKindOfAngle
   EXPECT_NE(errors->Last.find("cannot be mixed"), std::string::npos) << errors->Last;
   EXPECT_EQ(mixed->AddKeyCamera(0.0, k1), 1); // replacing the only key: no mix
 }
+
+// Audit (session 30): VTK's interpolator never sets ParallelProjection, and the metric's fresh
+// sampling camera is perspective, so a parallel pan through collinear keys (straight on screen,
+// every key hit) read 693 % screen excess, a 68 % key miss and 9 points leaving the view. Keys
+// that mix projections were accepted and gave meaningless numbers; they are refused now.
+TEST(CameraPathMetric, ParallelKeysAreMeasuredInParallelProjection)
+{
+  const auto parallelKey = [](double x) {
+    vtkNew<vtkCamera> c;
+    c->SetPosition(x, 0, 0);
+    c->SetFocalPoint(x, 0, -1);
+    c->SetViewUp(0, 1, 0);
+    c->ParallelProjectionOn();
+    c->SetParallelScale(4);
+    return vtkSmartPointer<vtkCamera>(c.Get());
+  };
+  vtkNew<vtkPoints> points;
+  for (const double x : { -1.0, 0.5, 2.0 })
+  {
+    for (const double y : { -1.0, 0.0, 1.5 })
+    {
+      points->InsertNextPoint(x, y, -5);
+    }
+  }
+  vtkNew<vtkCameraInterpolator> vtkPath;
+  vtkNew<vtkCameraPathMetric> metric;
+  metric->SetPoints(points);
+  for (const auto& [t, x] : { std::pair{ 0.0, 0.0 }, { 1.0, 1.0 }, { 2.0, 3.0 } })
+  {
+    vtkPath->AddCamera(t, parallelKey(x));
+    ASSERT_EQ(metric->AddKeyCamera(t, parallelKey(x)), 1);
+  }
+  ASSERT_EQ(metric->EvaluateSegments(vtkPath, 0), 1);
+  EXPECT_LT(metric->GetTotalScreenSpaceExcess(), 1e-9);
+  EXPECT_LT(metric->GetLargestKeyMissScreenSpace(), 1e-9);
+  EXPECT_EQ(metric->GetNumberOfPointsLeavingViewBetweenKeys(), 0);
+
+  vtkNew<lct_test::ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkCamera> perspective;
+  EXPECT_EQ(metric->AddKeyCamera(3.0, perspective), 0);
+  EXPECT_NE(
+    errors->Last.find("a perspective key cannot be mixed with parallel keys"), std::string::npos)
+    << errors->Last;
+  EXPECT_EQ(metric->GetNumberOfKeyCameras(), 3);
+  EXPECT_EQ(metric->AddKeyCamera(1.0, parallelKey(1.0)), 1); // replacing a key of the same kind
+}
+
+// Audit (session 30): sample times came from t0 + (t1 - t0) k / (n - 1), and t1 - t0 overflows
+// for a valid range such as [-1e308, 1e308]: every sample was NaN, reported as a failing path.
+TEST(CameraPathMetric, TimeRangesBeyondTheDoubleSpanAreSampled)
+{
+  vtkNew<vtkCameraInterpolatorLCT> path;
+  vtkNew<vtkCamera> key;
+  key->SetPosition(0, 0, 10);
+  ASSERT_EQ(path->AddCamera(0.0, key), 1);
+  key->SetPosition(3, 0, 10);
+  ASSERT_EQ(path->AddCamera(1.0, key), 1); // clamped beyond its keys, as VTK's
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 1, 0);
+  vtkNew<vtkCameraPathMetric> metric;
+  vtkNew<lct_test::ErrorCounter> errors;
+  metric->AddObserver(vtkCommand::ErrorEvent, errors);
+  metric->SetPoints(points);
+  ASSERT_EQ(metric->EvaluateInterpolator(path, -1e308, 1e308), 1) << errors->Last;
+  EXPECT_TRUE(std::isfinite(metric->GetScreenSpaceExcess()));
+  EXPECT_LT(metric->GetCameraSpaceExcess(), 1e-6); // a straight pan
+}
