@@ -6,9 +6,11 @@
 #include "lct/PolarParametrisation.h"
 
 #include "vtkCollection.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
 
 #include <Eigen/SVD>
 
@@ -395,8 +397,10 @@ int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double 
     vtkErrorMacro(<< "Interpolate: null transform or non-finite t; unchanged.");
     return 0;
   }
-  // log a + t (log b - log a): with weights (1 - t, t) the two terms cancel for a large t (a
-  // turn interpolated with itself at t = 1e16 came out as the identity, with status 1).
+  // Within [0, 1] the weights (1 - t, t): exact keys at the ends (log a + t (log b - log a)
+  // lost the digits of |log a| at t = 1) and no overflow (log b - log a of translations
+  // +-1e308 did). Outside, from the nearer key: with the weights the two terms cancel for a
+  // large t (a turn interpolated with itself at t = 1e16 came out as the identity).
   lct::LogCoords la, lb;
   if (!vtkLogTransform::CoordinatesIn(
         a, this->Parametrisation, this, "Interpolate", 0, la.data()) ||
@@ -404,11 +408,20 @@ int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double 
   {
     return 0;
   }
-  const lct::LogCoords result = la + t * (lb - la);
+  lct::LogCoords result = (1.0 - t) * la + t * lb;
+  if (t < 0.0 || t > 1.0)
+  {
+    const bool nearA = t < 0.5;
+    const lct::LogCoords step = nearA ? lct::LogCoords(lb - la) : lct::LogCoords(la - lb);
+    if (step.allFinite())
+    {
+      result = nearA ? lct::LogCoords(la + t * step) : lct::LogCoords(lb + (1.0 - t) * step);
+    }
+  }
   if (!result.allFinite())
   {
-    vtkErrorMacro(<< "Interpolate: t = " << lct::formatNumber(t)
-                  << " times the coordinates' difference overflows; unchanged.");
+    vtkErrorMacro(<< "Interpolate: at t = " << lct::formatNumber(t)
+                  << " the interpolated coordinates overflow; unchanged.");
     return 0;
   }
   return this->Commit(result.data(), this->Parametrisation, "Interpolate") ? 1 : 0;
@@ -454,6 +467,91 @@ void vtkLogTransform::DeepCopy(vtkAbstractTransform* transform)
 vtkAbstractTransform* vtkLogTransform::MakeTransform()
 {
   return vtkLogTransform::New();
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// A^-T n, normalised: `inverse` is the linear part of A^-1. The input is scaled to a largest
+/// component of 1 first and the result before normalising, whose squares would overflow or
+/// underflow for components beyond 1e+-154 (scales of 1e+-200 give such normals). A zero normal
+/// stays zero, as with vtkMath::Normalize.
+Eigen::Vector3d inverseTransposeTimes(const Eigen::Matrix3d& inverse, const Eigen::Vector3d& n)
+{
+  if (!n.allFinite())
+  {
+    return n; // the caller's NaN or Inf, not one of ours
+  }
+  const double inputScale = n.cwiseAbs().maxCoeff();
+  if (inputScale == 0.0)
+  {
+    return n;
+  }
+  Eigen::Vector3d out = inverse.transpose() * (n / inputScale);
+  const double outputScale = out.cwiseAbs().maxCoeff();
+  if (outputScale > 0.0)
+  {
+    out /= outputScale;
+    out.normalize();
+  }
+  return out;
+}
+} // namespace
+
+void vtkLogTransform::InternalTransformNormal(const double in[3], double out[3])
+{
+  const Eigen::Matrix3d inverse = this->Internal->InverseMatrix.topLeftCorner<3, 3>();
+  const Eigen::Vector3d n = inverseTransposeTimes(inverse, Eigen::Vector3d(in[0], in[1], in[2]));
+  std::copy(n.data(), n.data() + 3, out);
+}
+
+void vtkLogTransform::InternalTransformNormal(const float in[3], float out[3])
+{
+  const Eigen::Matrix3d inverse = this->Internal->InverseMatrix.topLeftCorner<3, 3>();
+  const Eigen::Vector3d n = inverseTransposeTimes(inverse, Eigen::Vector3d(in[0], in[1], in[2]));
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = static_cast<float>(n[i]);
+  }
+}
+
+void vtkLogTransform::TransformNormals(vtkDataArray* inNms, vtkDataArray* outNms)
+{
+  this->Update();
+  const Eigen::Matrix3d inverse = this->Internal->InverseMatrix.topLeftCorner<3, 3>();
+  const vtkIdType n = inNms->GetNumberOfTuples();
+  // Appended, as vtkLinearTransform does (SetNumberOfTuples would not keep what is there).
+  outNms->Resize(outNms->GetNumberOfTuples() + n);
+  double normal[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    inNms->GetTuple(i, normal);
+    const Eigen::Vector3d transformed =
+      inverseTransposeTimes(inverse, Eigen::Vector3d(normal[0], normal[1], normal[2]));
+    outNms->InsertNextTuple(transformed.data());
+  }
+}
+
+void vtkLogTransform::TransformPointsNormalsVectors(vtkPoints* inPts, vtkPoints* outPts,
+  vtkDataArray* inNms, vtkDataArray* outNms, vtkDataArray* inVrs, vtkDataArray* outVrs,
+  int nOptionalVectors, vtkDataArray** inVrsArr, vtkDataArray** outVrsArr)
+{
+  this->TransformPoints(inPts, outPts);
+  if (inNms)
+  {
+    this->TransformNormals(inNms, outNms);
+  }
+  if (inVrs)
+  {
+    this->TransformVectors(inVrs, outVrs);
+  }
+  if (inVrsArr)
+  {
+    for (int i = 0; i < nOptionalVectors; ++i)
+    {
+      this->TransformVectors(inVrsArr[i], outVrsArr[i]);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -136,9 +136,11 @@ public:
   ///@}
 
   /**
-   * this <- (1 - t) (.) a (+) t (.) b: linear interpolation of the stored coordinates, formed as
-   * log a + t (log b - log a) so that a large t does not cancel (t outside [0, 1] extrapolates).
-   * Returns 0 (unchanged) on null input or overflow.
+   * this <- (1 - t) (.) a (+) t (.) b: linear interpolation of the stored coordinates. Within
+   * [0, 1] formed as (1 - t) log a + t log b, exactly a at 0 and b at 1 and finite for any finite
+   * keys; outside it (extrapolation) from the nearer key, log a + t (log b - log a) or
+   * log b + (1 - t) (log a - log b), so that a large t does not cancel. Returns 0 (unchanged) on
+   * null input or when the result itself overflows.
    */
   int Interpolate(vtkLogTransform* a, vtkLogTransform* b, double t);
 
@@ -164,6 +166,22 @@ public:
   void DeepCopy(vtkAbstractTransform* transform);
 
   vtkAbstractTransform* MakeTransform() override;
+
+  ///@{
+  /**
+   * Normals, by the inverse transpose of the linear part taken from the inverse the state holds,
+   * then normalised. vtkLinearTransform inverts the matrix with vtkMatrix4x4::Invert, whose
+   * determinant overflows beyond a scale of ~5e102 (zero normals; NaN through
+   * vtkTransformPolyDataFilter) and underflows below ~1e-103 (the matrix left uninverted: the
+   * rotation of every normal reversed); these hold at any scale a vtkLogTransform accepts.
+   */
+  void TransformNormals(vtkDataArray* inNms, vtkDataArray* outNms) override;
+  void TransformPointsNormalsVectors(vtkPoints* inPts, vtkPoints* outPts, vtkDataArray* inNms,
+    vtkDataArray* outNms, vtkDataArray* inVrs, vtkDataArray* outVrs, int nOptionalVectors = 0,
+    vtkDataArray** inVrsArr = nullptr, vtkDataArray** outVrsArr = nullptr) override;
+  void InternalTransformNormal(const float in[3], float out[3]) override;
+  void InternalTransformNormal(const double in[3], double out[3]) override;
+  ///@}
 
   /**
    * Also the time of a change made to GetMatrix() from outside (e.g. GetMatrix()->SetElement):

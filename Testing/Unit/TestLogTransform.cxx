@@ -510,3 +510,98 @@ TEST(vtkLogTransform, AMatrixChangedFromOutsideIsPutBackWithAWarning)
   t->Update();
   EXPECT_EQ(warnings->Count, 1) << warnings->Last;
 }
+
+// Audit (session 30): Interpolate formed log a + t (log b - log a): log b - log a of translations
+// +-1e308 overflowed, so even t = 0 and t = 1 were refused ("overflows"), and at t = 1 the
+// digits of |log a| were lost (a key wound 1e8 radians gave b back 3e-9 off). Within [0, 1] the
+// result is exact at the ends and finite for any finite keys.
+TEST(vtkLogTransform, InterpolateGivesTheKeysExactlyAtItsEndsAndDoesNotOverflowBetween)
+{
+  vtkNew<vtkLogTransform> a, b, out;
+  const double far[16] = { 1, 0, 0, 1e308, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  const double back[16] = { 1, 0, 0, -1e308, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  ASSERT_EQ(a->SetMatrix(far), 1);
+  ASSERT_EQ(b->SetMatrix(back), 1);
+  for (const auto& [t, x] : { std::pair{ 0.0, 1e308 }, { 0.5, 0.0 }, { 1.0, -1e308 } })
+  {
+    ASSERT_EQ(out->Interpolate(a, b, t), 1) << t;
+    EXPECT_EQ(out->GetMatrix()->GetElement(0, 3), x) << t;
+  }
+  const double wound[12] = { 0, 0, 0, 6e7, 0, 8e7, 0, 0, 0, 0, 0, 0 };
+  const double key[12] = { 1, 2, 3, 0.1, 0.2, -0.05, 0.01, 0.02, 0, 0, 0, 0 };
+  ASSERT_EQ(a->SetLogCoordinates(wound), 1);
+  ASSERT_EQ(b->SetLogCoordinates(key), 1);
+  double c[12];
+  ASSERT_EQ(out->Interpolate(a, b, 1.0), 1);
+  out->GetLogCoordinates(c);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(c[i], key[i]) << i;
+  }
+  ASSERT_EQ(out->Interpolate(a, b, 0.0), 1);
+  out->GetLogCoordinates(c);
+  for (int i = 0; i < 12; ++i)
+  {
+    EXPECT_EQ(c[i], wound[i]) << i;
+  }
+  // Extrapolation beyond the double range is still refused.
+  vtkNew<ErrorCounter> errors;
+  out->AddObserver(vtkCommand::ErrorEvent, errors);
+  ASSERT_EQ(a->SetMatrix(far), 1);
+  ASSERT_EQ(b->SetMatrix(back), 1);
+  EXPECT_EQ(out->Interpolate(a, b, 2.0), 0);
+  EXPECT_NE(errors->Last.find("overflow"), std::string::npos) << errors->Last;
+}
+
+// Audit (session 30): normals came from vtkLinearTransform, which inverts the matrix with
+// vtkMatrix4x4::Invert: its determinant overflowed for a similarity of scale 1e103 (normals
+// (0, 0, 0), NaN through vtkTransformPolyDataFilter) and underflowed for 1e-108, where Invert
+// leaves the matrix as it is and every normal turned the wrong way, all with SetMatrix status 1.
+TEST(vtkLogTransform, NormalsAreRightAtEveryScaleItAccepts)
+{
+  const Eigen::Matrix3d turn =
+    Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d normal = Eigen::Vector3d(0.6, 0.8, 0.0);
+  for (const auto& stretch :
+    { Eigen::Vector3d(1e103, 1e103, 1e103), Eigen::Vector3d(1e-108, 1e-108, 1e-108),
+      Eigen::Vector3d(1e200, 1e200, 1e200), Eigen::Vector3d(1e-200, 1e-200, 1e-200),
+      Eigen::Vector3d(2e100, 1e100, 3e100), Eigen::Vector3d(2.0, 3.0, 0.5) })
+  {
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+    m.topLeftCorner<3, 3>() = turn * stretch.asDiagonal();
+    m(0, 3) = 5.0;
+    // A^-T n = R S^-1 n: the turn of the normal scaled the other way, then normalised.
+    const Eigen::Vector3d scaled = stretch.cwiseInverse().cwiseProduct(normal);
+    const Eigen::Vector3d expected = turn * (scaled / scaled.cwiseAbs().maxCoeff()).normalized();
+    vtkNew<vtkLogTransform> t;
+    vtkNew<vtkMatrix4x4> matrix;
+    toVtk(m, matrix);
+    ASSERT_EQ(t->SetMatrix(matrix), 1) << stretch.transpose();
+    double out[3];
+    const double in[3] = { normal[0], normal[1], normal[2] };
+    t->TransformNormal(in, out);
+    EXPECT_LE((Eigen::Vector3d(out[0], out[1], out[2]) - expected).norm(), 1e-13)
+      << stretch.transpose();
+    float outFloat[3];
+    const float inFloat[3] = { 0.6f, 0.8f, 0.0f };
+    t->TransformNormal(inFloat, outFloat);
+    EXPECT_LE((Eigen::Vector3d(outFloat[0], outFloat[1], outFloat[2]) - expected).norm(), 1e-6)
+      << stretch.transpose();
+    // Arrays, as vtkTransformPolyDataFilter transforms them (appended to what is there).
+    vtkNew<vtkDoubleArray> normals, transformed;
+    normals->SetNumberOfComponents(3);
+    normals->InsertNextTuple(in);
+    transformed->SetNumberOfComponents(3);
+    transformed->InsertNextTuple3(7, 7, 7);
+    t->TransformNormals(normals, transformed);
+    ASSERT_EQ(transformed->GetNumberOfTuples(), 2);
+    EXPECT_EQ(transformed->GetTuple3(0)[0], 7.0);
+    const double* tuple = transformed->GetTuple3(1);
+    EXPECT_LE((Eigen::Vector3d(tuple[0], tuple[1], tuple[2]) - expected).norm(), 1e-13);
+    // The inverse map turns normals back.
+    t->Inverse();
+    t->TransformNormal(out, out);
+    EXPECT_LE((Eigen::Vector3d(out[0], out[1], out[2]) - normal).norm(), 1e-13)
+      << stretch.transpose();
+  }
+}
