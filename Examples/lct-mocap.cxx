@@ -32,6 +32,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <fcntl.h>
@@ -84,7 +85,7 @@ analyse      prints a table (and writes DIR/analysis.csv and DIR/analysis.png, d
              and this compressor at several tolerances.
 
 Factor = 4 bytes x data rows x channels of the input / output bytes. Outputs are written to a
-temporary name (.NAME.PID.part) and renamed; on failure nothing is left behind. An -o that is a
+temporary name (.NAME.PID.RANDOM.part, created new) and renamed; on failure nothing is left behind. An -o that is a
 symbolic link writes the file it leads to; one that is (or leads to) a directory, FIFO or device
 is refused, before any work.
 exit codes: 0 ok, 1 error (unreadable or bad input, bound not met, write failed), 2 usage.
@@ -672,33 +673,21 @@ bool lct_mocap::PlotAnalysis(const std::vector<AnalysisRow>& rows, double height
   grab->SetInput(view->GetRenderWindow());
   grab->ReadFrontBufferOff();
   grab->Update();
-  fs::path target;
-  if (!OutputTarget(png, target, why))
-  {
-    return false;
-  }
-  const fs::path temporary = target.parent_path() /
-    ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".part");
+  // To memory, then through lct::writeFileAtomically: vtkPNGWriter opening a temporary under a
+  // name one could foresee wrote through a link or hung on a FIFO put there.
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(temporary.c_str());
+  writer->WriteToMemoryOn();
   writer->Write();
-  std::error_code error;
-  if (writer->GetErrorCode() != 0 || !fs::is_regular_file(temporary, error))
+  vtkUnsignedCharArray* encoded = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !encoded || encoded->GetNumberOfValues() == 0)
   {
-    fs::remove(temporary, error);
-    why = "cannot write " + temporary.string();
+    why = "cannot encode " + png + " as PNG";
     return false;
   }
-  fs::rename(temporary, target, error);
-  if (error)
-  {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    why = "cannot rename " + temporary.string() + " to " + target.string() + ": " + error.message();
-    return false;
-  }
-  return true;
+  const std::string bytes(reinterpret_cast<const char*>(encoded->GetPointer(0)),
+    static_cast<std::size_t>(encoded->GetNumberOfValues()));
+  return lct_mocap::WriteAtomically(fs::path(png), bytes, why);
 }
 
 int main(int argc, char* argv[])

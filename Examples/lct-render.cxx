@@ -78,6 +78,7 @@
 #include <system_error>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace
@@ -263,7 +264,7 @@ out so that the keys file gives only the scene and props):
         (Relative). Path-based and follow-data tracks: the key frames' cameras are used.
   Any other XML is refused with what is accepted.
 
-output: frames, video and sheet are written under a temporary name (.NAME.PID.part) and renamed
+output: frames, video and sheet are written under a temporary name (.NAME.PID.RANDOM.part, created new) and renamed
 when complete; a failed run removes its temporary files and never leaves a partial file under a
 final name. A final name that is a symbolic link is written through (the link stays); one that is
 a directory, FIFO or device is refused before rendering. DIR/manifest.json records the run
@@ -350,58 +351,71 @@ std::string NotARegularFile(const fs::path& file)
 }
 
 /// A file being written under a temporary name next to its final name (or, when that is a
-/// symbolic link, next to the file it leads to); removed unless Commit() renamed it.
+/// symbolic link, next to the file it leads to); removed unless Commit() renamed it. The file is
+/// created, empty, when the object is (lct::createTemporaryBeside: exclusively, under a name no
+/// one can foresee), so a writer that opens path() itself (VTK's PNG and Ogg writers) writes
+/// into this new file and never through a link or into a FIFO put there beforehand.
 class Temporary
 {
 public:
   explicit Temporary(const fs::path& final)
     : Final(OutputTarget(final))
-    , Path(this->Final.parent_path() /
-        ("." + this->Final.filename().string() + "." + std::to_string(::getpid()) + ".part"))
   {
+    std::string path;
+    this->Descriptor = lct::createTemporaryBeside(this->Final, path, this->Error);
+    if (this->Descriptor < 0)
+    {
+      return;
+    }
+    this->Path = path;
     for (this->Slot = 0; this->Slot < MaxTemporaries && Temporaries[this->Slot][0]; ++this->Slot)
     {
     }
-    if (this->Slot < MaxTemporaries && this->Path.string().size() < sizeof Temporaries[0])
+    if (this->Slot < MaxTemporaries && path.size() < sizeof Temporaries[0])
     {
-      std::snprintf(Temporaries[this->Slot], sizeof Temporaries[0], "%s", this->Path.c_str());
+      std::snprintf(Temporaries[this->Slot], sizeof Temporaries[0], "%s", path.c_str());
     }
     else
     {
-      this->Slot = -1;
+      this->Slot = -1; // not removed by a signal; the destructor still removes it
     }
   }
   ~Temporary() { this->Discard(); }
   Temporary(const Temporary&) = delete;
   Temporary& operator=(const Temporary&) = delete;
 
+  /// Why the file could not be created, or "".
+  const std::string& error() const { return this->Error; }
   const fs::path& path() const { return this->Path; }
+  /// The open file (-1 once closed or when it could not be created); CloseFile() closes it.
+  int file() const { return this->Descriptor; }
+  /// Closes the file; errno's message on failure (a full disk can show only here), else "".
+  std::string CloseFile()
+  {
+    if (this->Descriptor >= 0 && ::close(std::exchange(this->Descriptor, -1)) != 0)
+    {
+      return std::strerror(errno);
+    }
+    return "";
+  }
 
   /// Renames the temporary to the final name; on failure the temporary is removed and the
   /// reason returned.
   std::string Commit()
   {
-    // Checked before the run too (CheckOutput, Assemble); again here, as rename() would replace
-    // a FIFO or a device put under the final name since.
-    const std::string notAFile = NotARegularFile(this->Final);
-    if (!notAFile.empty())
-    {
-      this->Discard();
-      return notAFile;
-    }
-    if (::rename(this->Path.c_str(), this->Final.c_str()) != 0)
-    {
-      const std::string why = std::strerror(errno);
-      this->Discard();
-      return "renaming " + this->Path.string() + " to " + this->Final.string() + " failed: " + why;
-    }
+    this->CloseFile();
+    // Checked before the run too (CheckOutput, Assemble); again here (replaceWithTemporary), as
+    // rename() would replace a FIFO or a device put under the final name since.
+    std::string why;
+    const bool renamed = lct::replaceWithTemporary(this->Path.string(), this->Final, why);
     this->Release();
-    return "";
+    return renamed ? "" : why;
   }
 
   void Discard()
   {
-    if (this->Slot >= 0)
+    this->CloseFile();
+    if (!this->Path.empty())
     {
       ::unlink(this->Path.c_str());
     }
@@ -416,9 +430,12 @@ private:
       Temporaries[this->Slot][0] = '\0';
       this->Slot = -1;
     }
+    this->Path.clear();
   }
   fs::path Final;
   fs::path Path;
+  std::string Error;
+  int Descriptor = -1;
   int Slot = -1;
 };
 
@@ -427,15 +444,14 @@ private:
 std::string WriteFileAtomically(const fs::path& file, const unsigned char* data, size_t size)
 {
   Temporary tmp(file);
-  const int fd = ::open(tmp.path().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
+  if (!tmp.error().empty())
   {
-    return "cannot create " + tmp.path().string() + ": " + std::strerror(errno);
+    return tmp.error();
   }
   size_t done = 0;
   while (done < size)
   {
-    const ssize_t n = ::write(fd, data + done, size - done);
+    const ssize_t n = ::write(tmp.file(), data + done, size - done);
     if (n < 0 && errno == EINTR)
     {
       continue;
@@ -443,14 +459,14 @@ std::string WriteFileAtomically(const fs::path& file, const unsigned char* data,
     if (n <= 0)
     {
       const std::string why = n < 0 ? std::strerror(errno) : "nothing written";
-      ::close(fd);
       return "writing " + file.string() + " failed: " + why;
     }
     done += static_cast<size_t>(n);
   }
-  if (::close(fd) != 0)
+  const std::string closeError = tmp.CloseFile();
+  if (!closeError.empty())
   {
-    return "writing " + file.string() + " failed: " + std::strerror(errno);
+    return "writing " + file.string() + " failed: " + closeError;
   }
   return tmp.Commit();
 }
@@ -2181,6 +2197,11 @@ public:
     this->Frame->Modified();
     if (!this->Started)
     {
+      if (!this->VideoTmp.error().empty())
+      {
+        return this->VideoTmp.error();
+      }
+      this->VideoTmp.CloseFile(); // the writer opens the new, empty file by its name
       this->Video->Start();
       this->Started = true;
     }

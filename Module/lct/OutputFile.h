@@ -28,8 +28,23 @@ VTKLCT_EXPORT std::filesystem::path outputTarget(const std::filesystem::path& na
 /// write must not replace; else "".
 VTKLCT_EXPORT std::string notARegularFile(const std::filesystem::path& name);
 
+/// A new, empty file beside `target` (an outputTarget) to write it under a temporary name:
+/// created exclusively (never through a link, a FIFO or anything put in its place) under a name
+/// no one can foresee, ".NAME.PID.RANDOM.part", NAME shortened to fit the file system's name
+/// limit. Returns its descriptor (close-on-exec) and sets `temporary`; -1, with `why`, when it
+/// cannot be created.
+VTKLCT_EXPORT int createTemporaryBeside(
+  const std::filesystem::path& target, std::string& temporary, std::string& why);
+
+/// Renames `temporary` over `target` (an outputTarget). A target that exists and is not a regular
+/// file is refused; one that is keeps its permission bits (and its owner where this process may
+/// set it). On failure the temporary is removed and `why` names the cause.
+VTKLCT_EXPORT bool replaceWithTemporary(
+  const std::string& temporary, const std::filesystem::path& target, std::string& why);
+
 /// Writes `bytes` to outputTarget(name) through a new temporary beside it (created exclusively,
-/// under an unforeseeable name), renamed over it when complete. False, with `why` naming the
+/// under an unforeseeable name: createTemporaryBeside), renamed over it when complete
+/// (replaceWithTemporary). False, with `why` naming the
 /// cause (and nothing left behind), when the target exists and is not a regular file, or when
 /// creating, writing or renaming fails.
 VTKLCT_EXPORT bool writeFileAtomically(

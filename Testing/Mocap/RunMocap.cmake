@@ -1,5 +1,5 @@
 # Driver of the Mocap.* tests of lct-mocap (cmake -P). Variables:
-#   LCT_MOCAP  path of lct-mocap          LCT_MODE  roundtrip | analyse | error | links
+#   LCT_MOCAP  path of lct-mocap          LCT_MODE  roundtrip | analyse | error | links | planted
 #   LCT_OUT    scratch directory          LCT_INPUT (roundtrip, analyse) the motion file
 #   LCT_DATA   Testing/Data/Mocap         LCT_ARGS  (error) arguments, separated by |, with
 #   LCT_SETUP  (error) lctm | truncated | corrupted | fifo: first write LCT_OUT/in.lctm from
@@ -140,6 +140,30 @@ elseif (LCT_MODE STREQUAL "error")
     if (not_fifo OR NOT IS_SYMLINK "${LCT_OUT}/link")
       message(FATAL_ERROR "the FIFO or the link to it was replaced")
     endif ()
+  endif ()
+elseif (LCT_MODE STREQUAL "planted")
+  # analyse's plot went to .analysis.png.PID.part, opened by vtkPNGWriter: a link planted under
+  # that name (the PID is the shell's, which execs lct-mocap) had the victim overwritten.
+  if (NOT DEFINED ENV{DISPLAY})
+    message(STATUS "LCT_SKIP: no DISPLAY, no plot (run under xvfb-run -a)")
+    return()
+  endif ()
+  file(WRITE "${LCT_OUT}/victim.txt" "precious\n")
+  execute_process(
+    COMMAND sh -c "ln -s '${LCT_OUT}/victim.txt' \"${LCT_OUT}/.analysis.png.$$.part\" && exec \"$0\" \"$@\""
+            "${LCT_MOCAP}" analyse "${LCT_DATA}/small.bvh" --quick -o "${LCT_OUT}"
+    TIMEOUT 120
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE  err)
+  message(STATUS "exit ${rc}\n${out}${err}")
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "analyse failed")
+  endif ()
+  file(READ "${LCT_OUT}/victim.txt" victim)
+  if (NOT victim STREQUAL "precious\n" OR IS_SYMLINK "${LCT_OUT}/analysis.png"
+      OR NOT EXISTS "${LCT_OUT}/analysis.png")
+    message(FATAL_ERROR "the plot was written through the planted link")
   endif ()
 elseif (LCT_MODE STREQUAL "links")
   # -o a symbolic link writes the file it leads to, and the link stays: a relative link to a

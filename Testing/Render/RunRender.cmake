@@ -359,6 +359,47 @@ if (LCT_MODE STREQUAL "image")
   return()
 endif ()
 
+if (LCT_MODE STREQUAL "planted")
+  # Temporaries under names one can foresee (.NAME.PID.part; the PID is the shell's, which
+  # execs lct-render): links to a victim file and a FIFO put there first were written through
+  # (the victim overwritten, the final names turned into links to it) or hung the run. The run
+  # must create its temporaries new, leave the victim and the planted files alone, and finish.
+  file(REMOVE_RECURSE "${LCT_OUT}")
+  file(MAKE_DIRECTORY "${LCT_OUT}/out")
+  file(WRITE "${LCT_OUT}/victim.txt" "precious\n")
+  set(out "${LCT_OUT}/out")
+  set(plant "ln -s '${LCT_OUT}/victim.txt' \"${out}/.frame_0000.png.$$.part\" && ln -s '${LCT_OUT}/victim.txt' \"${out}/.video.ogv.$$.part\" && mkfifo \"${out}/.contact_sheet.png.$$.part\" && exec \"$0\" \"$@\"")
+  execute_process(
+    COMMAND sh -c "${plant}" "${LCT_RENDER}" --out "${out}" --frames 2 --size 32x24 ${LCT_ARGS}
+    TIMEOUT 90
+    RESULT_VARIABLE rc
+    OUTPUT_VARIABLE stdout
+    ERROR_VARIABLE  err)
+  message(STATUS "exit ${rc}\n${stdout}${err}")
+  if (rc EQUAL 125)
+    message(STATUS "LCT_SKIP: no DISPLAY (run under xvfb-run -a)")
+    return()
+  endif ()
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "lct-render exited with ${rc} (a timeout: it hung on the planted FIFO)")
+  endif ()
+  file(READ "${LCT_OUT}/victim.txt" victim)
+  if (NOT victim STREQUAL "precious\n")
+    message(FATAL_ERROR "the victim file was written through a planted link")
+  endif ()
+  foreach (f frame_0000.png frame_0001.png video.ogv contact_sheet.png)
+    if (IS_SYMLINK "${out}/${f}" OR NOT EXISTS "${out}/${f}")
+      message(FATAL_ERROR "${f} is missing or a link")
+    endif ()
+  endforeach ()
+  file(GLOB planted "${out}/.*.part")
+  list(LENGTH planted n)
+  if (NOT n EQUAL 3)
+    message(FATAL_ERROR "the planted files are not all there, or a temporary was left: ${planted}")
+  endif ()
+  return()
+endif ()
+
 if (LCT_MODE STREQUAL "links")
   # Final names that are symbolic links are written through: frame_0000.png a relative link to
   # a file not there yet, video.ogv an absolute one to an existing file, contact_sheet.png a link

@@ -10,6 +10,7 @@
 #include "lct/BVHWriter.h"
 #include "lct/MotionCodec.h"
 #include "lct/MotionError.h"
+#include "lct/OutputFile.h"
 #include "lct/SO3.h"
 
 #include <vtkNew.h>
@@ -371,6 +372,38 @@ TEST(MotionCodec, OutputsAreWrittenThroughLinksAndNeverOverFifos)
   std::string line;
   std::getline(kept, line);
   EXPECT_EQ(line, "precious");
+  fs::remove_all(dir);
+}
+
+// Audit (session 30): the temporary appended ".PID.RANDOM.part" to the whole name, so a name of
+// 231-255 bytes, which the file system accepts, was refused ("File name too long"); and the
+// rename gave a replaced private (0600) file the new file's 0644.
+TEST(MotionCodec, LongNamesAreWrittenAndReplacedFilesKeepTheirPermissions)
+{
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(LCT_BINARY_DIR) / "Testing/Temporary/codec-names";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string why;
+  const fs::path longName = dir / (std::string(250, 'm') + ".lctm");
+  ASSERT_TRUE(lct::writeFileAtomically(longName, "first", why)) << why;
+  ASSERT_TRUE(fs::is_regular_file(longName));
+  ASSERT_TRUE(lct::writeFileAtomically(longName, "second", why)) << why;
+  EXPECT_EQ(fs::file_size(longName), 6u);
+  const fs::path secret = dir / "secret.bvh";
+  ASSERT_TRUE(lct::writeFileAtomically(secret, "first", why)) << why;
+  fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
+  ASSERT_TRUE(lct::writeFileAtomically(secret, "second", why)) << why;
+  EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all,
+    fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(fs::file_size(secret), 6u);
+  std::size_t entries = 0;
+  for (const auto& entry : fs::directory_iterator(dir))
+  {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 2u); // no temporary left
   fs::remove_all(dir);
 }
 
