@@ -110,6 +110,9 @@ bool vtkLogTransform::Commit(const double* coordinates, int parametrisation, con
   state.Matrix = matrix.value;
   state.InverseCoordinates = inverseCoordinates.value;
   state.InverseMatrix = inverse.value;
+  // A new state supersedes an edit made to GetMatrix() since the last Update: that edit is not
+  // "put back" with a warning (SetMatrix(GetMatrix()) after editing it is the documented way).
+  this->WriteStateMatrix();
   this->Modified();
   return true;
 }
@@ -431,6 +434,7 @@ int vtkLogTransform::Interpolate(vtkLogTransform* a, vtkLogTransform* b, double 
 void vtkLogTransform::Identity()
 {
   *this->Internal = State();
+  this->WriteStateMatrix();
   this->Modified();
 }
 
@@ -441,6 +445,7 @@ void vtkLogTransform::Inverse()
   State& s = *this->Internal;
   std::swap(s.Coordinates, s.InverseCoordinates);
   std::swap(s.Matrix, s.InverseMatrix);
+  this->WriteStateMatrix();
   this->Modified();
 }
 
@@ -574,7 +579,14 @@ void vtkLogTransform::InternalUpdate()
                        "vtkLogTransform's state is its log coordinates, so their matrix is put "
                        "back: use SetMatrix to change the transform.");
   }
-  matrix = this->Internal->Matrix;
+  this->WriteStateMatrix();
+}
+
+//------------------------------------------------------------------------------
+void vtkLogTransform::WriteStateMatrix()
+{
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(this->Matrix->GetData()) =
+    this->Internal->Matrix;
   this->Matrix->Modified();
   this->MatrixWrittenTime = this->Matrix->GetMTime();
 }

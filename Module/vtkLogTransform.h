@@ -203,6 +203,8 @@ private:
   void operator=(const vtkLogTransform&) = delete;
 
   int SetMatrixNear(const double elements[16], const double* referenceCoordinates);
+  /// Writes the state's matrix into this->Matrix, which it then holds unchanged from outside.
+  void WriteStateMatrix();
   /// Sets the state to `coordinates` in `parametrisation`, with its matrix and its inverse (see
   /// Inverse()); false, with an error naming `caller` and the state unchanged, when either is
   /// not representable.

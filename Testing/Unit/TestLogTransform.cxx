@@ -344,7 +344,7 @@ TEST(vtkLogTransform, SpreadScalesAreIllConditionedNotSingularAndHugeScalesInver
 {
   for (const int parametrisation : { vtkLogTransform::POLAR, vtkLogTransform::MATRIX_LOG })
   {
-    for (const Eigen::Vector3d d :
+    for (const Eigen::Vector3d& d :
       { Eigen::Vector3d(1e-110, 1, 1e110), Eigen::Vector3d(1, 1, 1e200) })
     {
       vtkNew<vtkLogTransform> t;
@@ -508,6 +508,22 @@ TEST(vtkLogTransform, AMatrixChangedFromOutsideIsPutBackWithAWarning)
   t->GetLinearInverse()->Update();
   ASSERT_EQ(t->Scale(0.5), 1);
   t->Update();
+  EXPECT_EQ(warnings->Count, 1) << warnings->Last;
+  // Audit (session 30): editing GetMatrix() and then setting it, as the warning advises (or any
+  // other new state), warned all the same: the edited matrix was still newer than the last
+  // write, and exp(log M) differs from M in the last bits. A new state supersedes the edit.
+  turn->Scale(1.3, 0.7, 2.1);
+  ASSERT_EQ(t->SetMatrix(turn->GetMatrix()), 1);
+  vtkMatrix4x4* held = t->GetMatrix(); // GetMatrix() itself runs an Update
+  held->SetElement(0, 3, 5.0);
+  ASSERT_EQ(t->SetMatrix(held), 1);
+  t->Update();
+  EXPECT_NEAR(t->GetMatrix()->GetElement(0, 3), 5.0, 1e-14);
+  held->SetElement(0, 3, 7.0);
+  const double coordinates[12] = { 1, 2, 3, 0, 0, 0.5, 0, 0, 0, 0, 0, 0 };
+  ASSERT_EQ(t->SetLogCoordinates(coordinates), 1);
+  t->Update();
+  EXPECT_EQ(t->GetMatrix()->GetElement(2, 3), 3.0);
   EXPECT_EQ(warnings->Count, 1) << warnings->Last;
 }
 
