@@ -446,6 +446,27 @@ int vtkProbeDeformerLCT::RequestData(
       relative[i] = lct::worldStep(rest, current);
       relative[i].topRightCorner<3, 1>() = current.topRightCorner<3, 1>() -
         relative[i].topLeftCorner<3, 3>() * rest.topRightCorner<3, 1>();
+      // Both matrices are valid, yet their step can leave the double range (current 1e300 I,
+      // rest 1e-300 I) or compound their conditions beyond the limit: said so here, not as
+      // "NaN or Inf" or a "reflection" (a determinant rounded to the wrong sign) further on.
+      if (!relative[i].allFinite())
+      {
+        vtkErrorMacro(<< "probe " << i
+                      << ": its transform current rest^-1 overflows the double range (the "
+                         "current matrix is beyond the rest one by more than ~1e308)");
+        return fail();
+      }
+      const double stepCondition = lct::linearConditionNumber(relative[i]);
+      if (!(stepCondition <= lct::kMaxConditionNumber))
+      {
+        vtkErrorMacro(<< "probe " << i
+                      << ": its transform current rest^-1 is too ill-conditioned to blend "
+                         "(condition number "
+                      << lct::formatNumber(stepCondition) << ", the limit "
+                      << lct::formatNumber(lct::kMaxConditionNumber)
+                      << "; the conditions of the current and rest matrices compound)");
+        return fail();
+      }
     }
     centres[i] = rest.topRightCorner<3, 1>();
     radii[i] = p.Radius;

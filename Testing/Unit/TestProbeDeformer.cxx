@@ -1722,3 +1722,55 @@ TEST(ProbeDeformer, IllConditionedRestMatricesAreAccurateOrRefused)
       << condition;
   }
 }
+
+// Audit (session 30): a step current rest^-1 whose conditions compound beyond the limit (rest and
+// current each at 1e12, twisted against each other) was reported as "a reflection" (its computed
+// determinant rounded negative), and a step beyond the double range (current 1e300 I, rest
+// 1e-300 I, both valid) as "NaN or Inf": each now names the step and its cause.
+TEST(ProbeDeformer, AStepBeyondTheLimitsNamesTheStep)
+{
+  lct_test::RandomTransforms random(4343);
+  // Refused in every blend mode, with the same message (the last mode's is returned).
+  const auto run = [](const Eigen::Matrix4d& current, const Eigen::Matrix4d& rest,
+                     std::string& message) {
+    vtkNew<vtkMatrix4x4> restMatrix, currentMatrix;
+    lct_test::toVtk(rest, restMatrix);
+    lct_test::toVtk(current, currentMatrix);
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(1, 1, 1);
+    vtkNew<vtkPolyData> mesh;
+    mesh->SetPoints(points);
+    for (const int mode : { vtkProbeDeformerLCT::POLAR, vtkProbeDeformerLCT::LINEAR })
+    {
+      vtkNew<vtkProbeDeformerLCT> deformer;
+      vtkNew<lct_test::ErrorCounter> errors;
+      deformer->AddObserver(vtkCommand::ErrorEvent, errors);
+      deformer->SetInputData(mesh);
+      deformer->SetBlendMode(mode);
+      deformer->AddProbe(currentMatrix, restMatrix);
+      if (deformer->GetExecutive()->Update() != 0 || (!message.empty() && errors->Last != message))
+      {
+        return false;
+      }
+      message = errors->Last;
+    }
+    return true;
+  };
+  std::string message;
+  Eigen::Matrix4d rest = Eigen::Matrix4d::Identity(), current = Eigen::Matrix4d::Identity();
+  rest.topLeftCorner<3, 3>() =
+    random.Rotation() * Eigen::Vector3d(1.0, 0.5, 1e-12).asDiagonal() * random.Rotation();
+  current.topLeftCorner<3, 3>() =
+    random.Rotation() * Eigen::Vector3d(1.0, 0.5, 1e-12).asDiagonal() * random.Rotation();
+  EXPECT_TRUE(run(current, rest, message));
+  EXPECT_NE(message.find("current rest^-1 is too ill-conditioned to blend"), std::string::npos)
+    << message;
+  message.clear();
+  rest = Eigen::Matrix4d::Identity();
+  current = Eigen::Matrix4d::Identity();
+  rest.topLeftCorner<3, 3>() *= 1e-300;
+  current.topLeftCorner<3, 3>() *= 1e300;
+  EXPECT_TRUE(run(current, rest, message));
+  EXPECT_NE(message.find("current rest^-1 overflows the double range"), std::string::npos)
+    << message;
+}
