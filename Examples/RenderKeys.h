@@ -2309,6 +2309,17 @@ inline void CheckPly(MeshText& text)
           "\" comes between the vertex and face elements (vtkPLYReader reads only one vertex "
           "element, followed by the faces; other elements may come after them)");
       }
+      // A second vertex (or face) element anywhere: vtkPLYReader reads the first, and the checks
+      // would have to guess which one it indexes (a second vertex element after the faces
+      // crashed the reader).
+      if ((e.Name == "vertex" || e.Name == "face") &&
+        std::any_of(elements.begin(), elements.end(),
+          [&](const Element& seen) { return seen.Name == e.Name; }))
+      {
+        text.Rewind();
+        text.FailAt("a second \"" + e.Name +
+          "\" element (vtkPLYReader reads one vertex and one face element)");
+      }
       const long long limit = e.Name == "vertex" ? Limits::MaxMeshPoints : Limits::MaxMeshCells;
       if (!ParseInteger(w[2], 0, limit, e.Count))
       {
@@ -2349,7 +2360,7 @@ inline void CheckPly(MeshText& text)
   const Element* vertex = nullptr;
   for (const auto& e : elements)
   {
-    if (e.Name == "vertex")
+    if (e.Name == "vertex" && !vertex)
     {
       vertex = &e;
     }
