@@ -570,8 +570,15 @@ vtkMTimeType vtkLogTransform::GetMTime()
 //------------------------------------------------------------------------------
 void vtkLogTransform::InternalUpdate()
 {
+  // Every state change writes its matrix (WriteStateMatrix), so there is nothing to do unless
+  // the matrix was changed from outside since (and rewriting it unchanged would race with other
+  // threads' TransformPoint).
+  if (this->Matrix->GetMTime() <= this->MatrixWrittenTime)
+  {
+    return;
+  }
   Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> matrix(this->Matrix->GetData());
-  if (this->Matrix->GetMTime() > this->MatrixWrittenTime && matrix != this->Internal->Matrix)
+  if (matrix != this->Internal->Matrix)
   {
     // vtkTransform adopts such a change (its deprecated "legacy hack"); here the coordinates,
     // the inverse and every operation would keep the old map while TransformPoint used the new.
