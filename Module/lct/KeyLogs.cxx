@@ -7,8 +7,21 @@
 #include "lct/SO3.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <utility>
+
+namespace
+{
+/// log(||L||_F^3 / det L), an upper bound of log cond(L)^2 + log 5.2 and at least log cond(L)
+/// (lct::needsAccurateProducts' measure), free of overflow.
+double logIllConditioning(const Eigen::Matrix4d& m, double logDeterminant)
+{
+  const Eigen::Matrix3d linear = m.topLeftCorner<3, 3>();
+  const double largest = linear.cwiseAbs().maxCoeff();
+  return 3.0 * (std::log(largest) + std::log((linear / largest).norm())) - logDeterminant;
+}
+} // namespace
 
 namespace lct
 {
@@ -514,6 +527,47 @@ Status KeyLogs::combineRelative(
   return check;
 }
 
+Status KeyLogs::combineTwoIllConditioned(
+  const CurveWeights& w, int p, int q, Eigen::Matrix4d& out, MissingLog* missing) const
+{
+  // About an ill-conditioned key the step's rounding is amplified by its condition even where
+  // the result is far better conditioned (keys I and a stretch of condition 1e12: the largest
+  // stretch 1e-6 off at t = 0.9, which the determinant check cannot see, with status OK); about
+  // the better-conditioned key it is not. But near an ill-conditioned key, its smallest stretch
+  // is kept only by the step from it, a product with a near-identity: then the result about it
+  // is taken if it passes the determinant check and agrees with the other to kAgreement.
+  const bool qBetter =
+    logIllConditioning(this->Matrices[w.key[q]], this->LogDeterminant[w.key[q]]) <
+    logIllConditioning(this->Matrices[w.key[p]], this->LogDeterminant[w.key[p]]);
+  const int better = qBetter ? q : p, worse = qBetter ? p : q;
+  Eigen::Matrix4d first;
+  const Status status = this->combineAbout(w, w.key[better], first, missing);
+  if (status != Status::Ok)
+  {
+    return status;
+  }
+  if (this->checkResult(w, first) == Status::Ok)
+  {
+    out = first;
+    return Status::Ok;
+  }
+  Eigen::Matrix4d second;
+  if (this->combineAbout(w, w.key[worse], second, nullptr) == Status::Ok &&
+    this->checkResult(w, second) == Status::Ok)
+  {
+    const double scale = first.topLeftCorner<3, 3>().cwiseAbs().maxCoeff();
+    const double difference =
+      (first.topLeftCorner<3, 3>() - second.topLeftCorner<3, 3>()).cwiseAbs().maxCoeff();
+    if (difference <= kAgreement * scale)
+    {
+      out = second;
+      return Status::Ok;
+    }
+  }
+  out = first; // refused by the caller's check
+  return Status::Ok;
+}
+
 KeyLogs::HandOver KeyLogs::handOver(const CurveWeights& w)
 {
   HandOver h;
@@ -545,6 +599,27 @@ KeyLogs::HandOver KeyLogs::handOver(const CurveWeights& w)
 Status KeyLogs::combineRelativeUnchecked(
   const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const
 {
+  // Two keys (the Linear type, or wherever only two weights are not zero): the result is the same
+  // about either of them (Polar: U^t S^t L_a = (U^t S^(t-1) U^T) U S L_a about b, the polar
+  // factors of the inverse step being U^T and U S^-1 U^T; MatrixLog: A (A^-1 B)^t =
+  // B (B^-1 A)^(1-t)), so there is nothing to hand over: about the key of larger weight.
+  int p = -1, q = -1, nonzero = 0;
+  for (int j = 0; j < w.count; ++j)
+  {
+    if (w.weight[j] != 0.0)
+    {
+      (p < 0 ? p : q) = j;
+      ++nonzero;
+    }
+  }
+  if (nonzero == 2)
+  {
+    if (!this->Accurate[w.key[p]] && !this->Accurate[w.key[q]])
+    {
+      return this->combineAbout(w, w.key[w.weight[q] > w.weight[p] ? q : p], out, missing);
+    }
+    return this->combineTwoIllConditioned(w, p, q, out, missing);
+  }
   const HandOver h = handOver(w);
   const int a = h.first, b = h.second;
   const Status status = this->combineAbout(w, w.key[a], out, missing);

@@ -201,6 +201,12 @@ private:
   void updateAbsoluteFrom(int index);
   Status combineAbout(
     const CurveWeights& w, int reference, Eigen::Matrix4d& out, MissingLog* missing) const;
+  /// Two keys p, q (entries of w) of which at least one is ill-conditioned: about the better
+  /// conditioned one, or about the other where only that one passes the determinant check and
+  /// the two agree to kAgreement (relative, largest entry of the linear part).
+  Status combineTwoIllConditioned(
+    const CurveWeights& w, int p, int q, Eigen::Matrix4d& out, MissingLog* missing) const;
+  static constexpr double kAgreement = 1e-8;
   Status combineRelativeUnchecked(
     const CurveWeights& w, Eigen::Matrix4d& out, MissingLog* missing) const;
 

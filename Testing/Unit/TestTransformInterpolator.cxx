@@ -708,3 +708,53 @@ TEST(TransformInterpolatorLCT, InitializeReportsTheNextClampAgain)
     EXPECT_EQ(warnings->Count, round) << warnings->Last;
   }
 }
+
+// Audit (session 30): between the identity and a stretch of condition 1e8-1e12, the Polar relative
+// form took each point about the key of larger weight; past the midpoint that is the
+// ill-conditioned key, whose step's rounding is amplified by its condition: the largest stretch
+// came out 1e-10 (condition 1e8) to 1e-6 (1e12) off, relative, with status 1 (the determinant
+// check sees only their product). Two keys give the same point about either, so it is taken
+// about the better-conditioned one. The exact |L|_F^2 of U^t S^t is trace(D^2t).
+TEST(vtkTransformInterpolatorLCT, TwoKeysWithAnIllConditionedOneAreAccurateOrRefused)
+{
+  for (const double exponent : { 4.0, 5.0, 6.0 })
+  {
+    vtkNew<vtkTransform> stretch;
+    stretch->RotateWXYZ(143.2, 3, 1, 0);
+    stretch->Scale(std::pow(10.0, exponent), 1, std::pow(10.0, -exponent));
+    stretch->RotateWXYZ(57.3, 1, 1, 1);
+    for (const bool stretchFirst : { false, true })
+    {
+      vtkNew<vtkTransformInterpolatorLCT> path;
+      path->SetInterpolationTypeToLinear();
+      vtkNew<vtkMatrix4x4> identity;
+      ASSERT_EQ(path->AddTransform(stretchFirst ? 1.0 : 0.0, identity), 1);
+      ASSERT_EQ(path->AddTransform(stretchFirst ? 0.0 : 1.0, stretch->GetMatrix()), 1);
+      int accepted = 0;
+      for (const double t : { 0.1, 0.4, 0.6, 0.8, 0.9, 0.99 })
+      {
+        vtkNew<vtkMatrix4x4> m;
+        if (!path->InterpolateTransform(stretchFirst ? 1.0 - t : t, m))
+        {
+          continue;
+        }
+        ++accepted;
+        double squares = 0.0;
+        for (int i = 0; i < 3; ++i)
+        {
+          for (int j = 0; j < 3; ++j)
+          {
+            squares += m->GetElement(i, j) * m->GetElement(i, j);
+          }
+        }
+        const double exact =
+          std::pow(10.0, 2 * exponent * t) + 1.0 + std::pow(10.0, -2 * exponent * t);
+        // Before the midpoint (about the identity either way) the error is the problem's own,
+        // up to ~6e-9 at condition 1e12; past it the old reference added 1e-10 to 1e-6.
+        EXPECT_LE(std::abs(squares - exact) / exact, t > 0.5 ? 1e-12 : 1e-8)
+          << exponent << " " << t;
+      }
+      EXPECT_GE(accepted, 5) << exponent; // accurate where it can be, not refused wholesale
+    }
+  }
+}
