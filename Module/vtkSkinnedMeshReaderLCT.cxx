@@ -93,6 +93,47 @@ void toVtk(const Eigen::Matrix4d& m, vtkMatrix4x4* out)
   }
 }
 
+/// Why the keys of an animation channel cannot be sampled, or "": a value or time that is not
+/// finite (it makes the node, and every bone below it, NaN about that key), or a zero quaternion
+/// (it stands for no rotation at all; sampled, it silently came out as the identity).
+std::string keyProblem(const aiNodeAnim& channel)
+{
+  const auto describe = [](const char* kind, unsigned k, double tick, const char* what) {
+    return std::string(kind) + " key " + std::to_string(k) + " (tick " + lct::formatNumber(tick) +
+      ") " + what;
+  };
+  const auto vectorProblem = [&describe](
+                               const char* kind, const aiVectorKey* keys, unsigned count) {
+    for (unsigned k = 0; k < count; ++k)
+    {
+      const aiVector3D& v = keys[k].mValue;
+      if (!std::isfinite(keys[k].mTime) || !std::isfinite(v.x) || !std::isfinite(v.y) ||
+        !std::isfinite(v.z))
+      {
+        return describe(kind, k, keys[k].mTime, "is not finite");
+      }
+    }
+    return std::string();
+  };
+  std::string problem = vectorProblem("position", channel.mPositionKeys, channel.mNumPositionKeys);
+  for (unsigned k = 0; k < channel.mNumRotationKeys && problem.empty(); ++k)
+  {
+    const aiQuatKey& key = channel.mRotationKeys[k];
+    const aiQuaternion& q = key.mValue;
+    if (!std::isfinite(key.mTime) || !std::isfinite(q.w) || !std::isfinite(q.x) ||
+      !std::isfinite(q.y) || !std::isfinite(q.z))
+    {
+      problem = describe("rotation", k, key.mTime, "is not finite");
+    }
+    else if (q.w == 0 && q.x == 0 && q.y == 0 && q.z == 0)
+    {
+      problem = describe("rotation", k, key.mTime, "is the zero quaternion, which is no rotation");
+    }
+  }
+  return problem.empty() ? vectorProblem("scale", channel.mScalingKeys, channel.mNumScalingKeys)
+                         : problem;
+}
+
 std::string lowerCase(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -151,6 +192,26 @@ struct vtkSkinnedMeshReaderLCT::Internals
     }
     this->CachedTime = seconds;
     return this->CachedWorld;
+  }
+
+  /// A bone's world matrix at `seconds` (clamped to the animation's range); false if it is not
+  /// finite. Load checks every key, but finite keys at extreme magnitudes can still overflow when
+  /// interpolated or multiplied down the node tree.
+  bool Pose(int bone, double seconds, Eigen::Matrix4d& matrix)
+  {
+    const double t = std::min(std::max(seconds, this->StartTime), this->EndTime);
+    const Bone& b = this->Bones[bone];
+    matrix = b.Node < 0 ? b.Rest : this->World(t)[b.Node];
+    return matrix.allFinite();
+  }
+
+  /// Why Pose() failed, for an error message.
+  std::string NotFinite(int bone, double seconds) const
+  {
+    return "the matrix of bone " + std::to_string(bone) + " ('" + this->Bones[bone].Name +
+      "') at time " + lct::formatNumber(seconds) +
+      " is not finite (the animation's keys overflow when interpolated or multiplied down the "
+      "node tree)";
   }
 };
 
@@ -288,10 +349,17 @@ bool vtkSkinnedMeshReaderLCT::Load()
     in.TicksPerSecond = a.mTicksPerSecond > 0.0 ? a.mTicksPerSecond : 25.0;
     for (unsigned c = 0; c < a.mNumChannels; ++c)
     {
-      if (a.mChannels[c])
+      if (!a.mChannels[c])
       {
-        in.Channels[a.mChannels[c]->mNodeName.C_Str()] = a.mChannels[c];
+        continue;
       }
+      const std::string problem = keyProblem(*a.mChannels[c]);
+      if (!problem.empty())
+      {
+        return fail("the animation of node '" + std::string(a.mChannels[c]->mNodeName.C_Str()) +
+          "': " + problem + "; nothing read.");
+      }
+      in.Channels[a.mChannels[c]->mNodeName.C_Str()] = a.mChannels[c];
     }
     in.EndTime =
       std::isfinite(a.mDuration) && a.mDuration > 0 ? a.mDuration / in.TicksPerSecond : 0.0;
@@ -580,10 +648,14 @@ int vtkSkinnedMeshReaderLCT::GetBoneMatrix(int bone, double time, vtkMatrix4x4* 
                   << " is not finite; result unchanged.");
     return 0;
   }
-  Internals& in = *this->Internal;
-  const double t = std::min(std::max(time, in.StartTime), in.EndTime);
-  const Internals::Bone& b = in.Bones[bone];
-  toVtk(b.Node < 0 ? b.Rest : in.World(t)[b.Node], result);
+  Eigen::Matrix4d matrix;
+  if (!this->Internal->Pose(bone, time, matrix))
+  {
+    vtkErrorMacro(<< "GetBoneMatrix: " << this->Internal->NotFinite(bone, time)
+                  << "; result unchanged.");
+    return 0;
+  }
+  toVtk(matrix, result);
   return 1;
 }
 
@@ -605,6 +677,17 @@ int vtkSkinnedMeshReaderLCT::ConfigureDeformer(vtkProbeDeformerLCT* deformer, do
     return 0;
   }
   const int n = this->GetNumberOfBones();
+  // Every bone posed before the deformer is touched: one that cannot be leaves it as it was.
+  std::vector<Eigen::Matrix4d> poses(static_cast<std::size_t>(n));
+  for (int b = 0; b < n; ++b)
+  {
+    if (!this->Internal->Pose(b, time, poses[b]))
+    {
+      vtkErrorMacro(<< "ConfigureDeformer: " << this->Internal->NotFinite(b, time)
+                    << "; the deformer is unchanged.");
+      return 0;
+    }
+  }
   const bool same = deformer->GetNumberOfProbes() == n;
   if (!same)
   {
@@ -616,7 +699,7 @@ int vtkSkinnedMeshReaderLCT::ConfigureDeformer(vtkProbeDeformerLCT* deformer, do
     // made configuring a second deformer at another time move the first one too.
     vtkNew<vtkMatrix4x4> current;
     vtkNew<vtkMatrix4x4> rest;
-    this->GetBoneMatrix(b, time, current);
+    toVtk(poses[b], current);
     this->GetBoneRestMatrix(b, rest);
     if (same)
     {

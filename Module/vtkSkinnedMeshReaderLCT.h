@@ -21,6 +21,7 @@
  * Errors (a missing, unreadable or mesh-less file, one whose structure assimp's validation
  * refuses, a node transform or bone offset matrix that is not affine or not finite, or whose
  * 3x3 part is singular or beyond condition number 1e13 (a zero scale), a NaN vertex or weight,
+ * an animation key (value or time) that is not finite or a zero rotation quaternion,
  * more than 10^7 vertices, 65536 bones or 32 influences per vertex) are reported with a
  * vtkErrorMacro naming the file (and the node or bone); the request fails and the output is
  * empty. A bone naming no node of the file is a warning: its vertices stay in the bind pose.
@@ -84,7 +85,7 @@ public:
   /**
    * A bone's rest matrix and its matrix at `time` (clamped to the animation's range), both world
    * coordinates. Return 1, or 0 with an error for an index out of range, a null result, a time
-   * that is not finite or before an update.
+   * that is not finite, a bone matrix that overflows (not finite) or before an update.
    */
   int GetBoneRestMatrix(int bone, vtkMatrix4x4* result);
   int GetBoneMatrix(int bone, double time, vtkMatrix4x4* result);
@@ -94,7 +95,8 @@ public:
    * Give `deformer` one probe per bone at `time` and this reader's weight arrays (POINT_DATA,
    * linear normalisation). The probe matrices are the deformer's own: configuring another
    * deformer at another time leaves this one as it is. Returns 1, or 0 with an error (null
-   * deformer, before an update, a time that is not finite).
+   * deformer, before an update, a time or a bone matrix that is not finite; the deformer is then
+   * unchanged).
    */
   int ConfigureDeformer(vtkProbeDeformerLCT* deformer, double time);
 

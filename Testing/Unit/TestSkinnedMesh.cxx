@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -51,12 +52,24 @@ void appendBytes(std::string& bytes, const std::vector<T>& values)
   std::memcpy(&bytes[at], values.data(), values.size() * sizeof(T));
 }
 
+/// What triangleCharacter adds to its file: `nodes`, JSON node objects after "mesh" and "bone"
+/// (indices 2, 3, ..., each starting with a comma), `joint` the index of the node the skin binds
+/// to, and `rotation`, an animation of node "bone"'s rotation by two keys: the times t0 t1 (s)
+/// and the quaternions x y z w of each, 10 floats (none: no animation).
+struct Additions
+{
+  std::string nodes;
+  int joint = 1;
+  std::vector<float> rotation;
+};
+
 /// A glTF file of one triangle (with normals) skinned to one bone of weight 1: node "mesh" holds
 /// the mesh, node "bone" is the joint. `meshNode` and `boneNode` are JSON members added to those
 /// nodes (e.g. `,"scale":[0,1,1]`), `inverseBind` the bone's inverse bind matrix as glTF stores
 /// it (column-major, little-endian float32). Returns the file's path.
 std::string triangleCharacter(const std::string& name, const std::string& meshNode,
-  const std::string& boneNode, const std::array<float, 16>& inverseBind)
+  const std::string& boneNode, const std::array<float, 16>& inverseBind,
+  const Additions& more = Additions())
 {
   std::string data;
   appendBytes(data, std::vector<float>{ 0, 0, 0, 1, 0, 0, 0, 1, 0 });            // 0: positions
@@ -64,21 +77,37 @@ std::string triangleCharacter(const std::string& name, const std::string& meshNo
   appendBytes(data, std::vector<std::uint16_t>(12, 0));                          // 72: joints
   appendBytes(data, std::vector<float>{ 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0 });   // 96: weights
   appendBytes(data, std::vector<float>(inverseBind.begin(), inverseBind.end())); // 144: matrix
+  std::string animation, accessors, views;
+  if (!more.rotation.empty())
+  {
+    appendBytes(data, more.rotation); // 208: times, 216: quaternions
+    animation = R"(,"animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"rotation"}}],
+"samplers":[{"input":5,"output":6}]}])";
+    accessors = R"(,
+ {"bufferView":5,"componentType":5126,"count":2,"type":"SCALAR"},
+ {"bufferView":6,"componentType":5126,"count":2,"type":"VEC4"})";
+    views = R"(,
+ {"buffer":0,"byteOffset":208,"byteLength":8},{"buffer":0,"byteOffset":216,"byteLength":32})";
+  }
   const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
 "nodes":[{"name":"mesh","mesh":0,"skin":0)" +
-    meshNode + R"(},{"name":"bone")" + boneNode + R"(}],
+    meshNode + R"(},{"name":"bone")" + boneNode + "}" + more.nodes + R"(],
 "meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1,"JOINTS_0":2,"WEIGHTS_0":3}}]}],
-"skins":[{"joints":[1],"inverseBindMatrices":4}],
+"skins":[{"joints":[)" +
+    std::to_string(more.joint) + R"(],"inverseBindMatrices":4}])" + animation + R"(,
 "accessors":[
  {"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
  {"bufferView":1,"componentType":5126,"count":3,"type":"VEC3"},
  {"bufferView":2,"componentType":5123,"count":3,"type":"VEC4"},
  {"bufferView":3,"componentType":5126,"count":3,"type":"VEC4"},
- {"bufferView":4,"componentType":5126,"count":1,"type":"MAT4"}],
+ {"bufferView":4,"componentType":5126,"count":1,"type":"MAT4"})" +
+    accessors + R"(],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},
  {"buffer":0,"byteOffset":36,"byteLength":36},{"buffer":0,"byteOffset":72,"byteLength":24},
- {"buffer":0,"byteOffset":96,"byteLength":48},{"buffer":0,"byteOffset":144,"byteLength":64}],
-"buffers":[{"byteLength":208,"uri":"data:application/octet-stream;base64,)" +
+ {"buffer":0,"byteOffset":96,"byteLength":48},{"buffer":0,"byteOffset":144,"byteLength":64})" +
+    views + R"(],
+"buffers":[{"byteLength":)" +
+    std::to_string(data.size()) + R"(,"uri":"data:application/octet-stream;base64,)" +
     lct_test::base64(data) + "\"}]}\n";
   const std::string path = std::string(LCT_BINARY_DIR) + "/Testing/Temporary/" + name + ".gltf";
   std::ofstream(path, std::ios::binary) << gltf;
@@ -424,4 +453,199 @@ TEST(SkinnedMeshReader, QueryErrorsNameOnlyTheirOwnCause)
   EXPECT_EQ(reader->ConfigureDeformer(deformer, 0.0), 1);
   EXPECT_EQ(deformer->GetNumberOfProbes(), 1);
   EXPECT_EQ(errors->Count, 0) << errors->Last;
+}
+
+TEST(SkinnedMeshReader, AnimationKeysThatAreNotFiniteAreErrors)
+{
+  // Audit: a NaN in one animation key of anim_test.x was read with success, and GetBoneMatrix
+  // and ConfigureDeformer then returned 1 with NaN matrices. Load now checks every key.
+  const std::string file = "X/anim_test.x";
+  if (!have(file))
+  {
+    GTEST_SKIP() << kModels + file << " is missing (assimp-testmodels)";
+  }
+  std::ifstream in(kModels + file, std::ios::binary);
+  const std::string original(
+    (std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // joint2's keys at tick 12 (its 12th, index 11: the file's keys start at tick 1), in the
+  // order of its AnimationKey blocks: rotation, scale, position.
+  struct Case
+  {
+    const char* name;
+    const char* key;
+    const char* value;
+    const char* why;
+  };
+  const Case cases[] = {
+    { "x-copy", "", "", "" },
+    { "x-nan-rotation", "12;4;-0.990011,0.000000,0.000000,-0.140991;;,",
+      "12;4;nan,0.000000,0.000000,0.032145;;,", "rotation key 11 (tick 12) is not finite" },
+    { "x-nan-scale", "12;3;1.000000,1.000000,1.000000;;,", "12;3;1.000000,1.000000,nan;;,",
+      "scale key 11 (tick 12) is not finite" },
+    { "x-nan-position", "12;3;3.043184,-0.000000,-0.000000;;,", "12;3;3.043184,nan,-0.000000;;,",
+      "position key 11 (tick 12) is not finite" },
+  };
+  const std::size_t joint2 = original.find("{ joint2 }");
+  ASSERT_NE(joint2, std::string::npos);
+  for (const Case& c : cases)
+  {
+    std::string text = original;
+    if (*c.key)
+    {
+      const std::size_t at = text.find(c.key, joint2);
+      ASSERT_NE(at, std::string::npos) << c.name;
+      text.replace(at, std::strlen(c.key), c.value);
+    }
+    const std::string path = std::string(LCT_BINARY_DIR) + "/Testing/Temporary/" + c.name + ".x";
+    std::ofstream(path, std::ios::binary) << text;
+    vtkNew<vtkSkinnedMeshReaderLCT> reader;
+    vtkNew<lct_test::ErrorCounter> errors, executive;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+    reader->SetFileName(path.c_str());
+    vtkNew<vtkMatrix4x4> m;
+    vtkNew<vtkProbeDeformerLCT> deformer;
+    deformer->SetInputConnection(reader->GetOutputPort());
+    if (!*c.key)
+    {
+      // The copy itself reads: the errors below come from the changed keys.
+      ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+      for (int b = 0; b < reader->GetNumberOfBones(); ++b)
+      {
+        ASSERT_EQ(reader->GetBoneMatrix(b, 0.5, m), 1) << b;
+        EXPECT_TRUE(lct_test::fromVtk(m).allFinite()) << b;
+      }
+      EXPECT_EQ(reader->ConfigureDeformer(deformer, 0.5), 1);
+      EXPECT_EQ(errors->Count, 0) << errors->Last;
+      continue;
+    }
+    EXPECT_EQ(reader->GetExecutive()->Update(), 0) << c.name;
+    EXPECT_EQ(errors->Count, 1) << c.name << ": " << errors->Last;
+    EXPECT_NE(
+      errors->Last.find(path + ": the animation of node 'joint2': " + c.why + "; nothing read."),
+      std::string::npos)
+      << c.name << ": " << errors->Last;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << c.name;
+    EXPECT_EQ(reader->GetNumberOfBones(), 0) << c.name;
+    EXPECT_EQ(reader->GetBoneMatrix(1, 0.5, m), 0) << c.name;
+    EXPECT_EQ(reader->ConfigureDeformer(deformer, 0.5), 0) << c.name;
+    EXPECT_EQ(deformer->GetNumberOfProbes(), 0) << c.name;
+  }
+}
+
+TEST(SkinnedMeshReader, ZeroQuaternionOrNaNKeyTimeIsAnError)
+{
+  // A zero quaternion stands for no rotation at all (it was sampled as the identity), and a NaN
+  // key time leaves the keys unordered; both were read with success.
+  // glTF stores the keys as they are (X rebuilds its quaternions through a matrix).
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  struct Case
+  {
+    const char* name;
+    std::vector<float> rotation; // t0 t1, x y z w of each
+    const char* why;
+  };
+  const Case cases[] = {
+    { "quarter-turn", { 0, 1, 0, 0, 0, 1, 0, 0, 0.70710678f, 0.70710678f }, "" },
+    { "zero-quaternion", { 0, 1, 0, 0, 0, 1, 0, 0, 0, 0 },
+      "rotation key 1 (tick 1000) is the zero quaternion, which is no rotation" },
+    { "nan-key-time", { 0, nan, 0, 0, 0, 1, 0, 0, 1, 0 },
+      "rotation key 1 (tick nan) is not finite" },
+  };
+  for (const Case& c : cases)
+  {
+    Additions more;
+    more.rotation = c.rotation;
+    const std::string path = triangleCharacter(c.name, "", "", kIdentity, more);
+    vtkNew<vtkSkinnedMeshReaderLCT> reader;
+    vtkNew<lct_test::ErrorCounter> errors, executive;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+    reader->SetFileName(path.c_str());
+    vtkNew<vtkMatrix4x4> m;
+    if (!*c.why)
+    {
+      // The animation itself reads (assimp keys glTF in milliseconds): the bone turns about z.
+      ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+      ASSERT_EQ(reader->GetNumberOfBones(), 1);
+      EXPECT_NEAR(reader->GetEndTime(), 1.0, 1e-12);
+      ASSERT_EQ(reader->GetBoneMatrix(0, 1.0, m), 1);
+      EXPECT_NEAR(m->GetElement(1, 0), 1.0, 1e-6);
+      EXPECT_EQ(errors->Count, 0) << errors->Last;
+      continue;
+    }
+    EXPECT_EQ(reader->GetExecutive()->Update(), 0) << c.name;
+    EXPECT_EQ(errors->Count, 1) << c.name << ": " << errors->Last;
+    EXPECT_NE(
+      errors->Last.find(path + ": the animation of node 'bone': " + c.why + "; nothing read."),
+      std::string::npos)
+      << c.name << ": " << errors->Last;
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << c.name;
+    EXPECT_EQ(reader->GetBoneMatrix(0, 1.0, m), 0) << c.name;
+  }
+}
+
+TEST(SkinnedMeshReader, BoneMatricesThatOverflowAreErrors)
+{
+  // Every transform of the file finite, but the bone sits under nine nodes scaled by 1e38 each:
+  // its world matrix overflows double. GetBoneMatrix and ConfigureDeformer returned 1 with Inf
+  // and NaN in the matrices; they now refuse and leave their result as it was.
+  const auto chain = [](const char* name, int scaled) {
+    // "bone" and the nodes below it scaled; the last one, "deep", is the joint.
+    Additions more;
+    for (int i = 2; i <= scaled; ++i)
+    {
+      more.nodes += R"(,{"name":"link)" + std::to_string(i) +
+        R"(","scale":[1e38,1e38,1e38],"children":[)" + std::to_string(i + 1) + "]}";
+    }
+    more.nodes += R"(,{"name":"deep"})";
+    more.joint = scaled + 1;
+    return triangleCharacter(
+      name, "", R"(,"scale":[1e38,1e38,1e38],"children":[2])", kIdentity, more);
+  };
+  vtkNew<vtkSkinnedMeshReaderLCT> reader;
+  vtkNew<lct_test::ErrorCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkMatrix4x4> m;
+  vtkNew<vtkProbeDeformerLCT> deformer;
+  deformer->SetInputConnection(reader->GetOutputPort());
+
+  // Seven such nodes, 1e266: large but finite.
+  const std::string finite = chain("chain-of-7", 7);
+  reader->SetFileName(finite.c_str());
+  ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+  ASSERT_EQ(reader->GetNumberOfBones(), 1);
+  ASSERT_STREQ(reader->GetBoneName(0), "deep");
+  ASSERT_EQ(reader->GetBoneMatrix(0, 0.0, m), 1);
+  EXPECT_NEAR(m->GetElement(0, 0) / 1e266, 1.0, 1e-5);
+  ASSERT_EQ(reader->ConfigureDeformer(deformer, 0.0), 1);
+  ASSERT_EQ(deformer->GetNumberOfProbes(), 1);
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+
+  const std::string overflowing = chain("chain-of-9", 9);
+  reader->SetFileName(overflowing.c_str());
+  ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+  ASSERT_STREQ(reader->GetBoneName(0), "deep");
+  m->Identity();
+  m->SetElement(0, 3, 7.0);
+  EXPECT_EQ(reader->GetBoneMatrix(0, 0.0, m), 0);
+  EXPECT_EQ(errors->Count, 1) << errors->Last;
+  EXPECT_NE(errors->Last.find("GetBoneMatrix: the matrix of bone 0 ('deep') at time 0 is not "
+                              "finite"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_NE(errors->Last.find("; result unchanged."), std::string::npos) << errors->Last;
+  EXPECT_EQ(m->GetElement(0, 0), 1.0);
+  EXPECT_EQ(m->GetElement(0, 3), 7.0);
+  // The deformer keeps the probe of the previous file, untouched.
+  const vtkMTimeType before = deformer->GetMTime();
+  EXPECT_EQ(reader->ConfigureDeformer(deformer, 0.0), 0);
+  EXPECT_EQ(errors->Count, 2) << errors->Last;
+  EXPECT_NE(errors->Last.find("ConfigureDeformer: the matrix of bone 0 ('deep') at time 0 is not "
+                              "finite"),
+    std::string::npos)
+    << errors->Last;
+  EXPECT_NE(errors->Last.find("; the deformer is unchanged."), std::string::npos) << errors->Last;
+  EXPECT_EQ(deformer->GetNumberOfProbes(), 1);
+  EXPECT_EQ(deformer->GetMTime(), before);
 }
