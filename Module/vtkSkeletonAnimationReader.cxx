@@ -28,6 +28,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -35,7 +36,6 @@
 #include <limits>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,6 +46,9 @@ namespace
 /// Bounds on what a file can make the reader allocate (3 10^7 transforms are 3.8 GB).
 constexpr std::size_t kMaxJoints = 10000;
 constexpr std::size_t kMaxTransforms = 30000000;
+/// Key times within this fraction of a step of an even grid are evenly spaced: a key missing or
+/// added moves them half a step from it, float32 key times (glTF) far less.
+constexpr double kEvenKeysTolerance = 1e-2;
 
 using RowMajor4 = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
 
@@ -94,6 +97,11 @@ std::vector<Node> skeletonNodes(
   return nodes;
 }
 
+/// BVH rotation values beyond this many degrees are refused: assimp turns degrees into radians in
+/// float32, which at 10^4 degrees is off by up to 1.5e-3 degrees (2.6e-5 rad), in proportion
+/// beyond (2e-3 degrees at 100000.5, an arbitrary angle at 1e10).
+constexpr double kMaxRotationDegrees = 1e4;
+
 /// What the reader checks in the text of a BVH file that assimp does not.
 struct BVHText
 {
@@ -101,154 +109,277 @@ struct BVHText
   {
     std::string name;
     long line = 0;          ///< of its ROOT or JOINT keyword
-    int channels = 0;       ///< its CHANNELS count
+    int channels = 0;       ///< its CHANNELS counts (assimp appends every CHANNELS line's)
     bool positions = false; ///< an Xposition, Yposition or Zposition among them
+    std::vector<std::string> channelNames; ///< in order
   };
   std::vector<Joint> joints; ///< every ROOT and JOINT in file order: assimp's channel order
+  long endSites = 0;         ///< End Site blocks (joints of the skeleton too)
   long channels = 0;         ///< values per frame (the sum of the CHANNELS counts)
+  std::string problem;       ///< why the MOTION section cannot be read ("": it can)
   std::string declared;      ///< the count the Frames: line declares, as written
-  std::string frameTime;     ///< the Frame Time: line's value, as written (empty: none)
-  long rows = 0;             ///< data rows (non-blank lines) after Frame Time:
+  std::string frameTime;     ///< the Frame Time: value, as written
+  long rows = 0;             ///< data rows (lines holding values) after the Frame Time: value
   long badLine = 0;          ///< the first data row without `channels` values (0: none)
   long badValues = 0;        ///< and its number of values
+  /// The first rotation value assimp reads beyond kMaxRotationDegrees (line 0: none).
+  struct
+  {
+    long line = 0;
+    long frame = 0;
+    std::string joint, channel, value;
+  } bigRotation;
 };
 
-/// Scans a BVH file (its first word HIERARCHY): the joints' channels, tokenised as assimp does
-/// (white space separates tokens, a token starting with a brace is that brace alone), and the
-/// MOTION section, line by line. False for another file, or a BVH file without those lines
-/// (assimp reports that itself).
+/// A number as assimp's fast_atoreal_move reads it (it takes a decimal comma for a point), NaN
+/// for a token that is not one.
+double bvhNumber(std::string token)
+{
+  const std::size_t comma = token.find(',');
+  if (comma != std::string::npos && comma + 1 < token.size() &&
+    std::isdigit(static_cast<unsigned char>(token[comma + 1])))
+  {
+    token[comma] = '.';
+  }
+  char* end = nullptr;
+  const double value = std::strtod(token.c_str(), &end);
+  return !token.empty() && *end == '\0' ? value : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The tokens of a BVH file as assimp's BVHLoader::GetNextToken cuts them: white space (CR and
+/// tab included) separates them, wherever the lines end, and a token starting with a brace is
+/// that brace alone. Lines, for the messages, end at LF, CR LF or a lone CR.
+class BVHTokens
+{
+public:
+  explicit BVHTokens(std::istream& in)
+    : Buffer(in.rdbuf())
+  {
+  }
+
+  /// The next token ("" at the end of the file) and its line.
+  std::string Next(long& line)
+  {
+    using Traits = std::streambuf::traits_type;
+    std::string token;
+    int c = Traits::eof();
+    while (this->Buffer && (c = this->Buffer->sgetc()) != Traits::eof() && std::isspace(c))
+    {
+      this->Buffer->sbumpc();
+      if (c == '\n' || (c == '\r' && this->Buffer->sgetc() != '\n'))
+      {
+        ++this->Line;
+      }
+    }
+    line = this->Line;
+    while (this->Buffer && (c = this->Buffer->sgetc()) != Traits::eof() && !std::isspace(c))
+    {
+      token.push_back(Traits::to_char_type(c));
+      this->Buffer->sbumpc();
+      if (token == "{" || token == "}")
+      {
+        break;
+      }
+    }
+    return token;
+  }
+
+private:
+  std::streambuf* Buffer;
+  long Line = 1;
+};
+
+/// Scans a BVH file, token by token as assimp reads it: the joints' channels, the MOTION
+/// section's Frames: count and Frame Time:, and the data rows (the values of each line). False
+/// for another file (its first token is not HIERARCHY); for a BVH file, true, with
+/// `text.problem` saying why it cannot be read when it cannot: every later check relies on the
+/// scan, so a BVH file it cannot follow is refused, never taken for another format.
 bool scanBVH(const std::string& file, BVHText& text)
 {
-  std::ifstream in(file);
-  std::string line;
-  long number = 0;
-  enum class Next
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
   {
-    Header,
-    Keyword,
-    Name,
-    Count,
-    Channel
-  };
-  Next next = Next::Header;
-  long keywordLine = 0;
-  int channelsLeft = 0;
-  bool motion = false;
-  while (!motion && std::getline(in, line))
+    return false;
+  }
+  BVHTokens tokens(in);
+  long line = 0;
+  if (tokens.Next(line) != "HIERARCHY")
   {
-    ++number;
-    std::istringstream words(line);
-    std::string word;
-    while (!motion && words >> word)
+    return false;
+  }
+  // The joint each open brace belongs to (-1: an End Site), so that a CHANNELS line after a
+  // child's block still counts for its own joint, as in assimp.
+  std::vector<int> open;
+  int named = -1;
+  std::string token;
+  for (token = tokens.Next(line); !token.empty() && token != "MOTION"; token = tokens.Next(line))
+  {
+    if (token == "ROOT" || token == "JOINT")
     {
-      std::vector<std::string> tokens;
-      while (word.size() > 1 && (word[0] == '{' || word[0] == '}'))
+      const long keywordLine = line;
+      BVHText::Joint joint;
+      joint.name = tokens.Next(line);
+      joint.line = keywordLine;
+      text.joints.push_back(joint);
+      named = static_cast<int>(text.joints.size()) - 1;
+    }
+    else if (token == "End")
+    {
+      ++text.endSites;
+      named = -1;
+    }
+    else if (token == "{")
+    {
+      open.push_back(named);
+      named = -1;
+    }
+    else if (token == "}")
+    {
+      if (!open.empty())
       {
-        tokens.push_back(word.substr(0, 1));
-        word.erase(0, 1);
+        open.pop_back();
       }
-      tokens.push_back(word);
-      for (const std::string& token : tokens)
+    }
+    else if (token == "CHANNELS")
+    {
+      // assimp reads the count as a float and truncates it.
+      const double count = bvhNumber(tokens.Next(line));
+      const int channels = count >= 1.0 && count < 1e6 ? static_cast<int>(count) : 0;
+      BVHText::Joint* joint = !open.empty() && open.back() >= 0
+        ? &text.joints[static_cast<std::size_t>(open.back())]
+        : nullptr;
+      text.channels += channels;
+      if (joint)
       {
-        if (next == Next::Header)
+        joint->channels += channels;
+      }
+      for (int c = 0; c < channels; ++c)
+      {
+        const std::string channel = tokens.Next(line);
+        if (channel.empty())
         {
-          if (token != "HIERARCHY")
-          {
-            return false;
-          }
-          next = Next::Keyword;
-        }
-        else if (next == Next::Name)
-        {
-          text.joints.push_back({ token, keywordLine, 0, false });
-          next = Next::Keyword;
-        }
-        else if (next == Next::Count)
-        {
-          // assimp reads the count as a float and truncates it.
-          const double count = std::strtod(token.c_str(), nullptr);
-          channelsLeft = count >= 1.0 && count < 1e6 ? static_cast<int>(count) : 0;
-          if (!text.joints.empty())
-          {
-            text.joints.back().channels = channelsLeft;
-          }
-          text.channels += channelsLeft;
-          next = channelsLeft > 0 ? Next::Channel : Next::Keyword;
-        }
-        else if (next == Next::Channel)
-        {
-          if (!text.joints.empty() &&
-            (token == "Xposition" || token == "Yposition" || token == "Zposition"))
-          {
-            text.joints.back().positions = true;
-          }
-          next = --channelsLeft > 0 ? Next::Channel : Next::Keyword;
-        }
-        else if (token == "ROOT" || token == "JOINT")
-        {
-          next = Next::Name;
-          keywordLine = number;
-        }
-        else if (token == "CHANNELS")
-        {
-          next = Next::Count;
-        }
-        else if (token == "MOTION")
-        {
-          motion = true;
           break;
         }
+        if (joint)
+        {
+          joint->channelNames.push_back(channel);
+          joint->positions = joint->positions || channel == "Xposition" || channel == "Yposition" ||
+            channel == "Zposition";
+        }
       }
     }
   }
-  if (!motion)
+  if (token.empty())
   {
-    return false;
+    text.problem = "its HIERARCHY is not followed by a MOTION section (the file ends at line " +
+      std::to_string(line) + ")";
+    return true;
   }
-  bool timeLine = false;
-  text.declared.clear();
-  text.frameTime.clear();
-  while (!timeLine && std::getline(in, line))
+  const auto quoted = [](const std::string& t) -> std::string {
+    return t.empty() ? "the end of the file" : '"' + t + '"';
+  };
+  // assimp reads "Frames:", a count, "Frame", "Time:" and a value, in that order, as tokens.
+  const long motionLine = line;
+  token = tokens.Next(line);
+  if (token != "Frames:")
   {
-    ++number;
-    const std::size_t frames = line.find("Frames:");
-    if (frames != std::string::npos)
+    text.problem = "its MOTION keyword (line " + std::to_string(motionLine) + ") is followed by " +
+      quoted(token) + ", not by \"Frames:\" and the frame count";
+    return true;
+  }
+  const long framesLine = line;
+  text.declared = tokens.Next(line);
+  if (text.declared.empty())
+  {
+    text.problem = "its Frames: line (line " + std::to_string(framesLine) +
+      ") is followed by the end of the file";
+    return true;
+  }
+  // assimp converts the count to unsigned and reserves memory for it before reading a row:
+  // -1 and 1e12 frames ended in std::bad_alloc.
+  const double count = bvhNumber(text.declared);
+  const std::size_t joints = text.joints.size() + static_cast<std::size_t>(text.endSites);
+  if (!(count >= 0.0 && count == std::floor(count)))
+  {
+    text.problem = "its Frames: line (line " + std::to_string(framesLine) + ") says " +
+      text.declared + ", not a whole number of frames (0 or more)";
+    return true;
+  }
+  if (count * static_cast<double>(std::max<std::size_t>(joints, 1)) >
+    static_cast<double>(kMaxTransforms))
+  {
+    text.problem = "its Frames: line (line " + std::to_string(framesLine) + ") declares " +
+      text.declared + " frames of " + std::to_string(joints) +
+      " joints (End Sites included), beyond the reader's limit (10000 joints, 3e7 transforms)";
+    return true;
+  }
+  const long countLine = line;
+  const std::string frame = tokens.Next(line), time = tokens.Next(line);
+  if (frame != "Frame" || time != "Time:")
+  {
+    text.problem = "its Frames: count (line " + std::to_string(countLine) + ") is followed by " +
+      quoted(time.empty() ? frame : frame + " " + time) +
+      ", not by \"Frame Time:\" and the frame time";
+    return true;
+  }
+  const long timeLine = line;
+  text.frameTime = tokens.Next(line);
+  if (text.frameTime.empty())
+  {
+    text.problem =
+      "its Frame Time: (line " + std::to_string(timeLine) + ") is followed by the end of the file";
+    return true;
+  }
+  // The data rows: assimp reads count x channels values regardless of lines, frame by frame and
+  // in each frame joint by joint in file order; a line is a row for the checks.
+  std::vector<std::pair<std::size_t, std::size_t>> slots; // (joint, its channel) of each value
+  for (std::size_t j = 0; j < text.joints.size(); ++j)
+  {
+    for (std::size_t c = 0; c < text.joints[j].channelNames.size(); ++c)
     {
-      std::istringstream(line.substr(frames + 7)) >> text.declared;
-    }
-    const std::size_t time = line.find("Frame Time:");
-    if (time != std::string::npos)
-    {
-      std::istringstream(line.substr(time + 11)) >> text.frameTime;
-      timeLine = true;
+      slots.emplace_back(j, c);
     }
   }
-  if (!timeLine || text.declared.empty())
-  {
-    return false;
-  }
-  text.rows = 0;
-  while (std::getline(in, line))
-  {
-    ++number;
-    std::istringstream row(line);
-    std::string value;
-    long values = 0;
-    while (row >> value)
+  const std::uint64_t channels = static_cast<std::uint64_t>(text.channels);
+  const bool mapped = channels > 0 && slots.size() == channels;
+  // Within the limit checked above: exact.
+  const std::uint64_t read = static_cast<std::uint64_t>(count) * channels;
+  const auto endRow = [&text](long rowLine, long values) {
+    if (values > 0 && values != text.channels && text.badLine == 0)
     {
-      ++values;
-    }
-    if (values == 0)
-    {
-      continue;
-    }
-    ++text.rows;
-    if (values != text.channels && text.badLine == 0)
-    {
-      text.badLine = number;
+      text.badLine = rowLine;
       text.badValues = values;
     }
+  };
+  long rowLine = 0, values = 0;
+  std::uint64_t index = 0; // of the value, among all
+  for (token = tokens.Next(line); !token.empty(); token = tokens.Next(line), ++index)
+  {
+    if (line != rowLine)
+    {
+      endRow(rowLine, values);
+      rowLine = line;
+      values = 0;
+      ++text.rows;
+    }
+    ++values;
+    if (mapped && index < read && text.bigRotation.line == 0)
+    {
+      const auto& slot = slots[static_cast<std::size_t>(index % channels)];
+      const BVHText::Joint& joint = text.joints[slot.first];
+      const std::string& channel = joint.channelNames[slot.second];
+      if ((channel == "Xrotation" || channel == "Yrotation" || channel == "Zrotation") &&
+        std::abs(bvhNumber(token)) > kMaxRotationDegrees)
+      {
+        text.bigRotation.line = line;
+        text.bigRotation.frame = static_cast<long>(index / channels);
+        text.bigRotation.joint = joint.name;
+        text.bigRotation.channel = channel;
+        text.bigRotation.value = token;
+      }
+    }
   }
+  endRow(rowLine, values);
   return true;
 }
 
@@ -313,6 +444,15 @@ bool vtkSkeletonAnimationReader::Load()
     vtkErrorMacro(<< file << ": not readable as an animation file: " << declared);
     return false;
   }
+  // Before assimp, which reserves memory for a BVH file's Frames: count.
+  BVHText bvh;
+  const bool isBVH = scanBVH(file, bvh);
+  if (isBVH && !bvh.problem.empty())
+  {
+    vtkErrorMacro(<< file << ": not readable as an animation file: " << bvh.problem
+                  << "; nothing read.");
+    return false;
+  }
   Assimp::Importer importer;
   // No post-processing: the node hierarchy and the keys as the file has them.
   const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
@@ -368,8 +508,6 @@ bool vtkSkeletonAnimationReader::Load()
   std::transform(extension.begin(), extension.end(), extension.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   const bool statesFrameTime = extension == ".bvh";
-  BVHText bvh;
-  const bool isBVH = scanBVH(file, bvh);
   if (isBVH && isBeyondFloat(bvh.frameTime))
   {
     vtkErrorMacro(<< file << ": its Frame Time, " << bvh.frameTime
@@ -447,6 +585,17 @@ bool vtkSkeletonAnimationReader::Load()
       in = Internals();
       return false;
     }
+    if (bvh.bigRotation.line > 0)
+    {
+      vtkErrorMacro(<< file << ": joint " << bvh.bigRotation.joint << "'s "
+                    << bvh.bigRotation.channel << " channel is " << bvh.bigRotation.value
+                    << " degrees at frame " << bvh.bigRotation.frame << " (line "
+                    << bvh.bigRotation.line << "), beyond +-" << kMaxRotationDegrees
+                    << ": assimp converts degrees to radians in float32, which loses such an "
+                       "angle (an arbitrary rotation at 1e10); nothing read.");
+      in = Internals();
+      return false;
+    }
     // The Frames: line gives the frame count (the format's rule, which assimp follows for counts
     // above 0). Rows after them are not read (some exporters write one more: Boxing_Toes) and
     // said so; a count the frames read do not match (Frames: 0 and a row, which assimp reads as
@@ -462,7 +611,7 @@ bool vtkSkeletonAnimationReader::Load()
       in = Internals();
       return false;
     }
-    if (std::strtod(bvh.declared.c_str(), nullptr) != static_cast<double>(frames))
+    if (bvhNumber(bvh.declared) != static_cast<double>(frames))
     {
       vtkErrorMacro(<< file << ": its Frames: line says " << bvh.declared
                     << " but its MOTION section holds " << bvh.rows
@@ -483,7 +632,10 @@ bool vtkSkeletonAnimationReader::Load()
     // Other formats: channels keyed at different times. The frames cover the whole animation,
     // every channel's keys and the animation's duration (a channel with few keys can span more
     // than the one with the most: it was cut at the latter's last key), at that channel's rate
-    // or finer, evenly spaced.
+    // or finer, evenly spaced. That channel's keys are no frames when unevenly spaced (1/24 s
+    // to 23/24 s, then 4.2 s): the frame time would not be their spacing, and the other
+    // channels' keys between them were never sampled. The whole span is then resampled at
+    // their finest spacing.
     double first = ticks.front(), last = ticks.back();
     const auto span = [&first, &last](const auto* keys, unsigned count) {
       if (keys && count > 0)
@@ -503,8 +655,20 @@ bool vtkSkeletonAnimationReader::Load()
     {
       last = std::max(last, animation.mDuration);
     }
-    const double step = (ticks.back() - ticks.front()) / (frames - 1);
-    if (first < ticks.front() - 1e-6 * step || last > ticks.back() + 1e-6 * step)
+    double step = (ticks.back() - ticks.front()) / (frames - 1);
+    const bool beyond = first < ticks.front() - 1e-6 * step || last > ticks.back() + 1e-6 * step;
+    bool even = true;
+    double finest = step;
+    for (unsigned f = 1; f < frames; ++f)
+    {
+      finest = std::min(finest, ticks[f] - ticks[f - 1]);
+      even = even && std::abs(ticks[f] - (ticks.front() + f * step)) <= kEvenKeysTolerance * step;
+    }
+    if (!even)
+    {
+      step = finest;
+    }
+    if (beyond || !even)
     {
       if (!std::isfinite(first) || !std::isfinite(last))
       {
@@ -515,8 +679,19 @@ bool vtkSkeletonAnimationReader::Load()
       const double count = std::ceil((last - first) / step - 1e-6) + 1.0;
       if (!(count * static_cast<double>(nodes.size()) <= static_cast<double>(kMaxTransforms)))
       {
-        vtkErrorMacro(<< file << ": " << count << " frames of " << nodes.size()
-                      << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
+        if (even)
+        {
+          vtkErrorMacro(<< file << ": " << count << " frames of " << nodes.size()
+                        << " joints exceed the reader's limit (10000 joints, 3e7 transforms).");
+        }
+        else
+        {
+          vtkErrorMacro(<< file << ": " << count << " frames of " << nodes.size()
+                        << " joints exceed the reader's limit (10000 joints, 3e7 transforms): "
+                           "its keys are unevenly spaced, and the frames resample them at "
+                           "their finest spacing, "
+                        << step / ticksPerSecond << " s.");
+        }
         in = Internals();
         return false;
       }

@@ -10,17 +10,23 @@
  * S(scale) from its channel's keys, sampled at the frame times (linear for position and scale,
  * slerp for rotation, between keys; a single key is constant), or the node's own transform for
  * joints without a channel (end sites, fixed helper nodes). Frames are the key times of the
- * channel with the most keys, assumed evenly spaced; where other channels' keys or the
- * animation's duration reach beyond them, the frames cover that whole span, evenly spaced at that
- * channel's rate or finer. For BVH they are the file's data rows, at its Frame Time: as many as
- * its Frames: line declares (rows after them are not read, with a warning; a count the rows read
- * do not match, such as Frames: 0 before a row, is an error, and so is a MOTION section without
- * rows). A BVH joint's translation is its
- * OFFSET plus its position channels (the BVH convention; assimp 5.2 replaces the OFFSET, which
- * the reader adds back). What assimp would read other than the text says is an error naming the
- * line or joint: a data row without one value per channel (assimp reads values regardless of
- * lines and would shift every later frame), and position channels on a joint whose channel
- * count is not 6 (assimp drops them).
+ * channel with the most keys when they are evenly spaced (within 1 % of the step); where they
+ * are not (keys at 1/24 s to 23/24 s, then at 4.2 s), or where other channels' keys or the
+ * animation's duration reach beyond them, the frames cover that whole span, evenly spaced at
+ * that channel's rate (for uneven keys, their finest spacing) or finer, within the limits below.
+ * For BVH they are the file's data rows, at its Frame Time: as many as its Frames: line declares
+ * (rows after them are not read, with a warning; a count the rows read do not match, such as
+ * Frames: 0 before a row, is an error, and so is a MOTION section without rows). The text is
+ * read as assimp reads it, as tokens between white space whatever the line ends (LF, CR LF, CR),
+ * so the Frames: count or the Frame Time may be on the next line; a file starting with HIERARCHY
+ * whose MOTION section does not read so, or whose Frames: count is not a whole number within the
+ * limits below, is an error before assimp reads it. A BVH joint's translation is its OFFSET plus
+ * its position channels (the BVH convention; assimp 5.2 replaces the OFFSET, which the reader
+ * adds back). What assimp would read other than the text says is an error naming the line or
+ * joint: a data row without one value per channel (assimp reads values regardless of lines and
+ * would shift every later frame), position channels on a joint whose channel count is not 6
+ * (assimp drops them), and a rotation value beyond +-10^4 degrees (assimp converts degrees to
+ * radians in float32, which loses such an angle).
  *
  * Output (vtkPolyDataAlgorithm, one frame per request): the joints' world positions as points
  * (end sites included), bones as lines (parent to child), point data "JointName"

@@ -16,6 +16,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 
 /// x + 2 pi k nearest to `target`.
+/// Channels are unwrapped by whole turns for continuity up to this many turns either way.
+constexpr double kMaxUnwrappedTurns = 10.0;
+
 double unwrapNear(double x, double target)
 {
   return x + 2.0 * kPi * std::round((target - x) / (2.0 * kPi));
@@ -308,8 +311,18 @@ bool writeBVH(const SkeletalAnimation& animation, const std::string& rotationOrd
         const Eigen::Vector3d p = m.topRightCorner<3, 1>(); // at OFFSET 0
         row += number(p[0]) + " " + number(p[1]) + " " + number(p[2]) + " ";
       }
-      const Eigen::Vector3d angles =
+      Eigen::Vector3d angles =
         eulerAnglesNear(m.topLeftCorner<3, 3>(), order, previous[static_cast<std::size_t>(j)]);
+      // A joint spinning on would unwrap beyond what readers take accurately (assimp converts
+      // degrees to radians in float32, and the module's reader refuses |angle| > 1e4 degrees):
+      // an angle beyond kMaxUnwrappedTurns is brought back by whole turns (the same rotation).
+      for (int a = 0; a < 3; ++a)
+      {
+        if (std::abs(angles[a]) > kMaxUnwrappedTurns * 2.0 * kPi)
+        {
+          angles[a] = std::remainder(angles[a], 2.0 * kPi);
+        }
+      }
       previous[static_cast<std::size_t>(j)] = angles;
       row += number(angles[0] * kDegrees) + " " + number(angles[1] * kDegrees) + " " +
         number(angles[2] * kDegrees) + " ";

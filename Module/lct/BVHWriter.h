@@ -15,7 +15,9 @@
  * rotation channels in `rotationOrder` (e.g. "ZYX": R = Rz(a) Ry(b) Rx(c), the BVH convention of
  * multiplying in channel order), end sites an End Site block. The Euler angles of each frame
  * are the solution nearest to the previous frame's (of the two Tait-Bryan solutions, unwrapped
- * by whole turns), so the channels are continuous wherever the motion is. Numbers are written
+ * by whole turns), so the channels are continuous wherever the motion is, up to 10 turns either
+ * way (beyond, an angle is brought back by whole turns: readers take angles of more than ~1e4
+ * degrees inaccurately, assimp converting them in float32). Numbers are written
  * with 10 significant digits. Frame Time is the animation's frame time.
  *
  * BVH holds rotations and translations only: a local transform with scale or shear (linear

@@ -13,8 +13,10 @@
 #include "lct/OutputFile.h"
 #include "lct/SO3.h"
 
+#include <vtkExecutive.h>
 #include <vtkNew.h>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -438,6 +440,55 @@ TEST(MotionCodec, WriteBVHKeepsTheMotionOfHugeTranslations)
     ASSERT_NE(child, std::string::npos);
     EXPECT_NE(text.find("CHANNELS 6", child), std::string::npos) << scale << "\n" << text;
   }
+}
+
+// Session 30: the reader now refuses BVH rotations beyond 1e4 degrees (assimp converts them in
+// float32: 1e10 degrees came back 160 degrees off). The writer unwrapped a spinning joint's
+// channels by whole turns without end, so a joint spinning 40 turns was written at 14400 degrees
+// and its file refused; it is brought back by whole turns beyond 10 turns now, the same rotation.
+TEST(MotionCodec, WriteBVHOfAJointSpinningManyTurnsReadsBack)
+{
+  lct::SkeletalAnimation a;
+  a.frames = 400;
+  a.frameTime = 0.01;
+  a.joints.push_back({ "root", -1, false });
+  a.joints.push_back({ "tip", 0, true });
+  for (int f = 0; f < a.frames; ++f)
+  {
+    Eigen::Matrix4d root = Eigen::Matrix4d::Identity();
+    root.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd(0.2 * M_PI * f, Eigen::Vector3d::UnitZ()).toRotationMatrix(); // 40 turns
+    a.locals.push_back(root);
+    Eigen::Matrix4d tip = Eigen::Matrix4d::Identity();
+    tip(0, 3) = 1.0;
+    a.locals.push_back(tip);
+  }
+  namespace fs = std::filesystem;
+  const fs::path file = fs::path(LCT_BINARY_DIR) / "Testing/Temporary/spinning.bvh";
+  fs::create_directories(file.parent_path());
+  {
+    std::ofstream out(file);
+    std::string why;
+    ASSERT_TRUE(lct::writeBVH(a, "ZYX", out, &why)) << why;
+  }
+  vtkNew<vtkSkeletonAnimationReader> reader;
+  vtkNew<lct_test::ErrorCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(file.c_str());
+  ASSERT_EQ(reader->GetExecutive()->Update(), 1) << errors->Last;
+  ASSERT_EQ(reader->GetNumberOfFrames(), a.frames);
+  vtkNew<vtkMatrix4x4> m;
+  for (int f = 0; f < a.frames; f += 7)
+  {
+    ASSERT_EQ(reader->GetLocalTransform(0, f, m), 1);
+    EXPECT_LE((lct_test::fromVtk(m).topLeftCorner<3, 3>() -
+                a.locals[static_cast<std::size_t>(2 * f)].topLeftCorner<3, 3>())
+                .cwiseAbs()
+                .maxCoeff(),
+      1e-5) // assimp's float32 radians at up to 10 turns: ~4e-6
+      << f;
+  }
+  fs::remove(file);
 }
 
 } // namespace

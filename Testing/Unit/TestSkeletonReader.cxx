@@ -809,3 +809,243 @@ TEST(SkeletonReader, APlyDeclaringMoreElementsThanItHasBytesIsRefusedUpFront)
   EXPECT_NE(errors->Last.find("declares 2000000000 vertex elements"), std::string::npos)
     << errors->Last;
 }
+
+namespace
+{
+/// A one-joint BVH clip: OFFSET 10 20 30, 6 channels, one row moving it by (1, 2, 3).
+std::string oneRowBVH()
+{
+  return "HIERARCHY\nROOT Hips\n{\n OFFSET 10 20 30\n CHANNELS 6 Xposition Yposition Zposition "
+         "Zrotation Yrotation Xrotation\n End Site\n {\n  OFFSET 0 1 0\n }\n}\nMOTION\nFrames: "
+         "1\nFrame Time: 0.04\n1 2 3 0 0 0\n";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to)
+{
+  for (std::size_t at = text.find(from); at != std::string::npos;
+       at = text.find(from, at + to.size()))
+  {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+} // namespace
+
+TEST(SkeletonReader, BVHTextIsTokenisedAsAssimpReadsIt)
+{
+  // Audit: the scan of the text read lines and looked for "Frame Time:", so a file assimp reads
+  // (CR line ends, "Frame  Time:", the Frames: count on the next line) was taken for "not BVH":
+  // read without a word, the OFFSET of its 6-channel joints lost, every BVH check skipped. The
+  // scan now cuts tokens as assimp does; a file starting with HIERARCHY that it cannot follow is
+  // an error naming why.
+  const std::string bvh = oneRowBVH();
+  struct Case
+  {
+    const char* name;
+    std::string text;
+  };
+  const Case readable[] = {
+    { "LF", bvh },
+    { "CR", replaced(bvh, "\n", "\r") },
+    { "CR LF", replaced(bvh, "\n", "\r\n") },
+    { "two spaces", replaced(bvh, "Frame Time:", "Frame  Time:") },
+    { "tab", replaced(bvh, "Frame Time:", "Frame\tTime:") },
+    { "count on the next line", replaced(bvh, "Frames: 1", "Frames:\n1") },
+    { "frame time on the next line", replaced(bvh, "Frame Time: 0.04", "Frame Time:\n0.04") },
+    { "row on the frame time's line", replaced(bvh, "0.04\n", "0.04 ") },
+  };
+  for (const Case& c : readable)
+  {
+    const std::string path = temporaryFile("tokens.bvh", c.text);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 1) << c.name << ": " << w.errors->Last;
+    EXPECT_EQ(w.errors->Count, 0) << c.name << ": " << w.errors->Last;
+    ASSERT_EQ(w.reader->GetNumberOfFrames(), 1) << c.name;
+    EXPECT_NEAR(w.reader->GetFrameTime(), 0.04, 1e-7) << c.name;
+    // The OFFSET plus the channels: the BVH checks ran.
+    EXPECT_LT((worldPosition(w.reader, 0, 0) - Eigen::Vector3d(11, 22, 33)).norm(), 1e-5) << c.name;
+    std::filesystem::remove(path);
+  }
+  // The row checks still name the right line whatever the line ends (the row is line 14).
+  for (const char* end : { "\n", "\r", "\r\n" })
+  {
+    const std::string path =
+      temporaryFile("tokens-row.bvh", replaced(replaced(bvh, "0 0 0\n", "0 0 0 7\n"), "\n", end));
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 0);
+    EXPECT_EQ(w.errors->Count, 1) << w.errors->Last;
+    EXPECT_NE(
+      w.errors->Last.find("line 14 of its MOTION section holds 7 values"), std::string::npos)
+      << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+  // What assimp cannot read either: an error naming the cause (it was "not BVH" to the scan).
+  const Case unreadable[] = {
+    { "its HIERARCHY is not followed by a MOTION section", bvh.substr(0, bvh.find("MOTION")) },
+    { "its MOTION keyword (line 11) is followed by \"Frames:1\", not by \"Frames:\"",
+      replaced(bvh, "Frames: 1", "Frames:1") },
+    { "its Frames: count (line 12) is followed by \"Frame Time:0.04\", not by \"Frame Time:\"",
+      replaced(bvh, "Time: 0.04", "Time:0.04") },
+    { "its Frame Time: (line 13) is followed by the end of the file",
+      bvh.substr(0, bvh.find("0.04")) },
+  };
+  for (const Case& c : unreadable)
+  {
+    const std::string path = temporaryFile("tokens-bad.bvh", c.text);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 0) << c.name;
+    EXPECT_EQ(w.errors->Count, 1) << c.name << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(path + ": not readable as an animation file: " + c.name),
+      std::string::npos)
+      << w.errors->Last;
+    EXPECT_EQ(w.reader->GetNumberOfJoints(), 0) << c.name;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(SkeletonReader, RotationsBeyondTenThousandDegreesAreAnError)
+{
+  // Audit: assimp converts degrees to radians in float32: 1e10 degrees came back as +80.46
+  // degrees, 100000.5 degrees 0.002 degrees off, read without a word. Rotation values beyond
+  // 10^4 degrees are now an error naming the joint, the channel and the frame.
+  const auto clip = [](const std::string& hipsZ, const std::string& chestY,
+                      const std::string& position) {
+    return temporaryFile("big-rotation.bvh",
+      "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
+      "Zrotation Yrotation Xrotation\n  JOINT Chest\n  {\n    OFFSET 0 5 0\n    CHANNELS 3 "
+      "Zrotation Yrotation Xrotation\n    End Site\n    {\n      OFFSET 0 5 0\n    }\n  }\n}\n"
+      "MOTION\nFrames: 2\nFrame Time: 0.1\n0 0 0 10 20 30 1 2 3\n" +
+        position + " 0 0 " + hipsZ + " 20 30 1 " + chestY + " 3\n");
+  };
+  struct Case
+  {
+    const char* hipsZ;
+    const char* chestY;
+    const char* expected;
+  };
+  const Case refused[] = {
+    { "0", "1e10", "joint Chest's Yrotation channel is 1e10 degrees at frame 1 (line 20)" },
+    { "100000.5", "0", "joint Hips's Zrotation channel is 100000.5 degrees at frame 1" },
+    { "-10000.01", "0", "joint Hips's Zrotation channel is -10000.01 degrees" },
+    { "0", "inf", "joint Chest's Yrotation channel is inf degrees" },
+  };
+  for (const Case& c : refused)
+  {
+    const std::string path = clip(c.hipsZ, c.chestY, "0");
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 0) << c.expected;
+    EXPECT_EQ(w.errors->Count, 1) << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(c.expected), std::string::npos) << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find("float32"), std::string::npos) << w.errors->Last;
+    EXPECT_EQ(w.reader->GetAnimation(), nullptr);
+    std::filesystem::remove(path);
+  }
+  // At the bound, and positions of any size: read.
+  const std::string path = clip("10000", "-7200", "1e6");
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  EXPECT_EQ(w.reader->GetExecutive()->Update(), 1) << w.errors->Last;
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  EXPECT_EQ(w.reader->GetNumberOfFrames(), 2);
+  std::filesystem::remove(path);
+}
+
+TEST(SkeletonReader, AFramesCountAssimpCannotHoldIsAnErrorBeforeItReads)
+{
+  // Audit: assimp reserves memory for the Frames: count (as an unsigned: -1 is 4294967295) before
+  // reading a row: "Frames: -1" and "Frames: 1000000000000" failed with "std::bad_alloc". The
+  // count is now checked first, a whole number within the reader's limit (3e7 transforms).
+  const std::string header = "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition "
+                             "Yposition Zposition Zrotation Yrotation Xrotation\n End Site\n {\n  "
+                             "OFFSET 0 1 0\n }\n}\nMOTION\nFrames: ";
+  const std::string rows = "\nFrame Time: 0.1\n0 0 0 0 0 0\n1 0 0 0 0 0\n";
+  struct Case
+  {
+    const char* count;
+    const char* expected;
+  };
+  const Case refused[] = {
+    { "-1", "its Frames: line (line 12) says -1, not a whole number of frames" },
+    { "2.5", "its Frames: line (line 12) says 2.5, not a whole number of frames" },
+    { "two", "its Frames: line (line 12) says two, not a whole number of frames" },
+    { "1000000000000",
+      "its Frames: line (line 12) declares 1000000000000 frames of 2 joints (End Sites "
+      "included), beyond the reader's limit" },
+    { "15000001", "declares 15000001 frames of 2 joints" },
+  };
+  for (const Case& c : refused)
+  {
+    const std::string path = temporaryFile("frames-count.bvh", header + c.count + rows);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 0) << c.count;
+    EXPECT_EQ(w.errors->Count, 1) << c.count << ": " << w.errors->Last;
+    EXPECT_NE(w.errors->Last.find(c.expected), std::string::npos) << w.errors->Last;
+    EXPECT_EQ(w.errors->Last.find("bad_alloc"), std::string::npos) << w.errors->Last;
+    std::filesystem::remove(path);
+  }
+  for (const char* count : { "2", "2.0", "2e0" })
+  {
+    const std::string path = temporaryFile("frames-count.bvh", header + count + rows);
+    Watched w;
+    w.reader->SetFileName(path.c_str());
+    EXPECT_EQ(w.reader->GetExecutive()->Update(), 1) << count << ": " << w.errors->Last;
+    EXPECT_EQ(w.reader->GetNumberOfFrames(), 2) << count;
+    std::filesystem::remove(path);
+  }
+}
+
+TEST(SkeletonReader, UnevenlyKeyedChannelsAreResampledAtTheirFinestSpacing)
+{
+  // Audit: the frames were the key times of the channel with the most keys, "assumed evenly
+  // spaced": keyed at 0, 0.25, 0.5, 0.75, 1 and 4 s, they gave 6 frames with a frame time of
+  // 0.8 s, and B's keys between 1 s and 4 s (y = 40 at 2 s) were never sampled. Uneven keys now
+  // give frames over the whole span at their finest spacing, 0.25 s.
+  const std::string data = floatBytes({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f, 4.0f }) +
+    floatBytes({ 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0, 16, 0, 0 }) +
+    floatBytes({ 0.0f, 2.0f, 4.0f }) + floatBytes({ 0, 0, 0, 0, 40, 0, 0, 0, 0 });
+  const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"name":"root","children":[1,2]},{"name":"A","translation":[1,0,0]},
+ {"name":"B","translation":[0,1,0]}],
+"animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"translation"}},
+ {"sampler":1,"target":{"node":2,"path":"translation"}}],
+ "samplers":[{"input":0,"output":1,"interpolation":"LINEAR"},
+ {"input":2,"output":3,"interpolation":"LINEAR"}]}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":6,"type":"SCALAR","min":[0],"max":[4]},
+ {"bufferView":1,"componentType":5126,"count":6,"type":"VEC3"},
+ {"bufferView":2,"componentType":5126,"count":3,"type":"SCALAR","min":[0],"max":[4]},
+ {"bufferView":3,"componentType":5126,"count":3,"type":"VEC3"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":24},
+ {"buffer":0,"byteOffset":24,"byteLength":72},{"buffer":0,"byteOffset":96,"byteLength":12},
+ {"buffer":0,"byteOffset":108,"byteLength":36}],
+"buffers":[{"byteLength":144,"uri":"data:application/octet-stream;base64,)" +
+    lct_test::base64(data) + "\"}]}\n";
+  const std::string path = temporaryFile("uneven.gltf", gltf);
+  Watched w;
+  w.reader->SetFileName(path.c_str());
+  w.reader->UpdateInformation();
+  ASSERT_NE(w.reader->GetAnimation(), nullptr) << w.errors->Last;
+  ASSERT_EQ(w.reader->GetNumberOfJoints(), 2);
+  const int a = std::string(w.reader->GetJointName(0)) == "A" ? 0 : 1;
+  const int b = 1 - a;
+  ASSERT_STREQ(w.reader->GetJointName(b), "B");
+  ASSERT_EQ(w.reader->GetNumberOfFrames(), 17); // 0 to 4 s every 0.25 s
+  EXPECT_NEAR(w.reader->GetFrameTime(), 0.25, 1e-9);
+  vtkInformation* info = w.reader->GetOutputInformation(0);
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 17);
+  const double* times = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  for (int f = 0; f < 17; ++f)
+  {
+    EXPECT_NEAR(times[f], 0.25 * f, 1e-9) << f;
+  }
+  EXPECT_LT((worldPosition(w.reader, b, 8) - Eigen::Vector3d(0, 40, 0)).norm(), 1e-5);  // 2 s
+  EXPECT_LT((worldPosition(w.reader, a, 3) - Eigen::Vector3d(3, 0, 0)).norm(), 1e-5);   // 0.75 s
+  EXPECT_LT((worldPosition(w.reader, a, 10) - Eigen::Vector3d(10, 0, 0)).norm(), 1e-5); // 2.5 s
+  EXPECT_LT((worldPosition(w.reader, a, 16) - Eigen::Vector3d(16, 0, 0)).norm(), 1e-5); // 4 s
+  EXPECT_EQ(w.errors->Count, 0) << w.errors->Last;
+  std::filesystem::remove(path);
+}
