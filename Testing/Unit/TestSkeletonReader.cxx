@@ -68,10 +68,10 @@ std::string temporaryFile(const std::string& name, const std::string& contents)
 }
 
 /// The bytes of float32 values (glTF buffers are little endian, as the test machines).
-std::string floatBytes(std::initializer_list<float> values)
+std::string floatBytes(const std::vector<float>& values)
 {
   std::string bytes(values.size() * sizeof(float), '\0');
-  std::memcpy(&bytes[0], values.begin(), bytes.size());
+  std::memcpy(&bytes[0], values.data(), bytes.size());
   return bytes;
 }
 
@@ -663,30 +663,55 @@ TEST(SkeletonReader, ADataRowWithoutOneValuePerChannelIsAnError)
   }
 }
 
-TEST(SkeletonReader, FramesCoverEveryChannelsKeys)
+namespace
 {
-  // Audit: the frames were the key times of the channel with the most keys, so a glTF node keyed
-  // twice over 0-4 s was cut at the 1 s of another keyed 5 times over 0-1 s. Now the frames span
-  // every channel (and the animation's duration) at the busiest channel's rate: B reaches y = 40.
-  const std::string data = floatBytes({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f }) +
-    floatBytes({ 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0 }) + floatBytes({ 0.0f, 4.0f }) +
-    floatBytes({ 0, 0, 0, 0, 40, 0 });
-  const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+/// A glTF whose nodes A and B (children of "root") are translated by LINEAR samplers: A at key
+/// times `timesA` to the points `pointsA` (x, y, z each), B likewise.
+std::string translatedPairGltf(const std::vector<float>& timesA, const std::vector<float>& pointsA,
+  const std::vector<float>& timesB, const std::vector<float>& pointsB)
+{
+  const std::string data =
+    floatBytes(timesA) + floatBytes(pointsA) + floatBytes(timesB) + floatBytes(pointsB);
+  const auto n = [](const std::vector<float>& v) { return std::to_string(v.size()); };
+  const auto bytes = [](const std::vector<float>& v) { return 4 * v.size(); };
+  const auto last = [](const std::vector<float>& v) { return std::to_string(v.back()); };
+  const std::size_t o1 = bytes(timesA), o2 = o1 + bytes(pointsA), o3 = o2 + bytes(timesB);
+  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
 "nodes":[{"name":"root","children":[1,2]},{"name":"A","translation":[1,0,0]},
  {"name":"B","translation":[0,1,0]}],
 "animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"translation"}},
  {"sampler":1,"target":{"node":2,"path":"translation"}}],
  "samplers":[{"input":0,"output":1,"interpolation":"LINEAR"},
  {"input":2,"output":3,"interpolation":"LINEAR"}]}],
-"accessors":[{"bufferView":0,"componentType":5126,"count":5,"type":"SCALAR","min":[0],"max":[1]},
- {"bufferView":1,"componentType":5126,"count":5,"type":"VEC3"},
- {"bufferView":2,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[4]},
- {"bufferView":3,"componentType":5126,"count":2,"type":"VEC3"}],
-"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":20},
- {"buffer":0,"byteOffset":20,"byteLength":60},{"buffer":0,"byteOffset":80,"byteLength":8},
- {"buffer":0,"byteOffset":88,"byteLength":24}],
-"buffers":[{"byteLength":112,"uri":"data:application/octet-stream;base64,)" +
+"accessors":[{"bufferView":0,"componentType":5126,"count":)" +
+    n(timesA) + R"(,"type":"SCALAR","min":[0],"max":[)" + last(timesA) + R"(]},
+ {"bufferView":1,"componentType":5126,"count":)" +
+    n(timesA) + R"(,"type":"VEC3"},
+ {"bufferView":2,"componentType":5126,"count":)" +
+    n(timesB) + R"(,"type":"SCALAR","min":[0],"max":[)" + last(timesB) + R"(]},
+ {"bufferView":3,"componentType":5126,"count":)" +
+    n(timesB) + R"(,"type":"VEC3"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" +
+    std::to_string(o1) + R"(},
+ {"buffer":0,"byteOffset":)" +
+    std::to_string(o1) + R"(,"byteLength":)" + std::to_string(bytes(pointsA)) + R"(},
+ {"buffer":0,"byteOffset":)" +
+    std::to_string(o2) + R"(,"byteLength":)" + std::to_string(bytes(timesB)) + R"(},
+ {"buffer":0,"byteOffset":)" +
+    std::to_string(o3) + R"(,"byteLength":)" + std::to_string(bytes(pointsB)) + R"(}],
+"buffers":[{"byteLength":)" +
+    std::to_string(data.size()) + R"(,"uri":"data:application/octet-stream;base64,)" +
     lct_test::base64(data) + "\"}]}\n";
+}
+} // namespace
+
+TEST(SkeletonReader, FramesCoverEveryChannelsKeys)
+{
+  // Audit: the frames were the key times of the channel with the most keys, so a glTF node keyed
+  // twice over 0-4 s was cut at the 1 s of another keyed 5 times over 0-1 s. Now the frames span
+  // every channel (and the animation's duration) at the busiest channel's rate: B reaches y = 40.
+  const std::string gltf = translatedPairGltf({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f },
+    { 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0 }, { 0.0f, 4.0f }, { 0, 0, 0, 0, 40, 0 });
   const std::string path = temporaryFile("span.gltf", gltf);
   Watched w;
   w.reader->SetFileName(path.c_str());
@@ -1005,25 +1030,9 @@ TEST(SkeletonReader, UnevenlyKeyedChannelsAreResampledAtTheirFinestSpacing)
   // spaced": keyed at 0, 0.25, 0.5, 0.75, 1 and 4 s, they gave 6 frames with a frame time of
   // 0.8 s, and B's keys between 1 s and 4 s (y = 40 at 2 s) were never sampled. Uneven keys now
   // give frames over the whole span at their finest spacing, 0.25 s.
-  const std::string data = floatBytes({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f, 4.0f }) +
-    floatBytes({ 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0, 16, 0, 0 }) +
-    floatBytes({ 0.0f, 2.0f, 4.0f }) + floatBytes({ 0, 0, 0, 0, 40, 0, 0, 0, 0 });
-  const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
-"nodes":[{"name":"root","children":[1,2]},{"name":"A","translation":[1,0,0]},
- {"name":"B","translation":[0,1,0]}],
-"animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"translation"}},
- {"sampler":1,"target":{"node":2,"path":"translation"}}],
- "samplers":[{"input":0,"output":1,"interpolation":"LINEAR"},
- {"input":2,"output":3,"interpolation":"LINEAR"}]}],
-"accessors":[{"bufferView":0,"componentType":5126,"count":6,"type":"SCALAR","min":[0],"max":[4]},
- {"bufferView":1,"componentType":5126,"count":6,"type":"VEC3"},
- {"bufferView":2,"componentType":5126,"count":3,"type":"SCALAR","min":[0],"max":[4]},
- {"bufferView":3,"componentType":5126,"count":3,"type":"VEC3"}],
-"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":24},
- {"buffer":0,"byteOffset":24,"byteLength":72},{"buffer":0,"byteOffset":96,"byteLength":12},
- {"buffer":0,"byteOffset":108,"byteLength":36}],
-"buffers":[{"byteLength":144,"uri":"data:application/octet-stream;base64,)" +
-    lct_test::base64(data) + "\"}]}\n";
+  const std::string gltf = translatedPairGltf({ 0.0f, 0.25f, 0.5f, 0.75f, 1.0f, 4.0f },
+    { 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4, 0, 0, 16, 0, 0 }, { 0.0f, 2.0f, 4.0f },
+    { 0, 0, 0, 0, 40, 0, 0, 0, 0 });
   const std::string path = temporaryFile("uneven.gltf", gltf);
   Watched w;
   w.reader->SetFileName(path.c_str());
