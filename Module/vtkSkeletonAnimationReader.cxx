@@ -661,7 +661,10 @@ bool vtkSkeletonAnimationReader::Load()
     double finest = step;
     for (unsigned f = 1; f < frames; ++f)
     {
-      finest = std::min(finest, ticks[f] - ticks[f - 1]);
+      if (ticks[f] > ticks[f - 1]) // two keys at one time have no spacing to resample at
+      {
+        finest = std::min(finest, ticks[f] - ticks[f - 1]);
+      }
       even = even && std::abs(ticks[f] - (ticks.front() + f * step)) <= kEvenKeysTolerance * step;
     }
     if (!even)

@@ -1723,13 +1723,13 @@ TEST(ProbeDeformer, IllConditionedRestMatricesAreAccurateOrRefused)
   }
 }
 
-// Audit (session 30): a step current rest^-1 whose conditions compound beyond the limit (rest and
-// current each at 1e12, twisted against each other) was reported as "a reflection" (its computed
-// determinant rounded negative), and a step beyond the double range (current 1e300 I, rest
-// 1e-300 I, both valid) as "NaN or Inf": each now names the step and its cause.
+// Audit (session 30): a step current rest^-1 whose conditions compound beyond the limit, rest and
+// current each within it, was reported by the blend with another cause (two random keys of
+// condition 1e12: "a reflection", its computed determinant rounded negative), and a step beyond
+// the double range (current 1e300 I, rest 1e-300 I, both valid) as "NaN or Inf": each now
+// names the step and its cause.
 TEST(ProbeDeformer, AStepBeyondTheLimitsNamesTheStep)
 {
-  lct_test::RandomTransforms random(4343);
   // Refused in every blend mode, with the same message (the last mode's is returned).
   const auto run = [](const Eigen::Matrix4d& current, const Eigen::Matrix4d& rest,
                      std::string& message) {
@@ -1757,11 +1757,15 @@ TEST(ProbeDeformer, AStepBeyondTheLimitsNamesTheStep)
     return true;
   };
   std::string message;
+  // rest = Ry(90 deg) diag(1, 1, 1e-10) (condition 1e10) and current = diag(1e-6, 1, 1)
+  // (condition 1e6), each within the limit: their step diag(1e-6, 1, 1e10) Ry(-90 deg) has
+  // condition 1e16. (Random pairs of condition 1e12 gave steps near the limit, on either side
+  // of it depending on the build's rounding.)
   Eigen::Matrix4d rest = Eigen::Matrix4d::Identity(), current = Eigen::Matrix4d::Identity();
   rest.topLeftCorner<3, 3>() =
-    random.Rotation() * Eigen::Vector3d(1.0, 0.5, 1e-12).asDiagonal() * random.Rotation();
-  current.topLeftCorner<3, 3>() =
-    random.Rotation() * Eigen::Vector3d(1.0, 0.5, 1e-12).asDiagonal() * random.Rotation();
+    Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+    Eigen::Vector3d(1.0, 1.0, 1e-10).asDiagonal();
+  current.topLeftCorner<3, 3>() = Eigen::Vector3d(1e-6, 1.0, 1.0).asDiagonal();
   EXPECT_TRUE(run(current, rest, message));
   EXPECT_NE(message.find("current rest^-1 is too ill-conditioned to blend"), std::string::npos)
     << message;
