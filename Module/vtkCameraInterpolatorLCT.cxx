@@ -600,24 +600,13 @@ int vtkCameraInterpolatorLCT::AddCamera(double t, vtkCamera* camera)
     return 0;
   }
   const Key* other = this->Internal->Other(t);
-  if (other && other->Camera.parallelProjection != key.value.parallelProjection)
+  const std::string mismatch = other
+    ? vtkLCTCamera::KindMismatch(key.value.parallelProjection, key.value.horizontalViewAngle,
+        other->Camera.parallelProjection, other->Camera.horizontalViewAngle)
+    : std::string();
+  if (!mismatch.empty())
   {
-    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": a "
-                  << (key.value.parallelProjection ? "parallel" : "perspective")
-                  << " key cannot be mixed with "
-                  << (other->Camera.parallelProjection ? "parallel" : "perspective")
-                  << " keys; key rejected.");
-    return 0;
-  }
-  if (other && other->Camera.horizontalViewAngle != key.value.horizontalViewAngle)
-  {
-    // The two angles measure different things (a horizontal 60 degrees is a vertical 32 at
-    // aspect 2): blended, neither key's field of view would be reproduced.
-    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": a key whose view angle is "
-                  << (key.value.horizontalViewAngle ? "horizontal" : "vertical")
-                  << " (UseHorizontalViewAngle " << (key.value.horizontalViewAngle ? "on" : "off")
-                  << ") cannot be mixed with keys whose view angle is "
-                  << (other->Camera.horizontalViewAngle ? "horizontal" : "vertical")
+    vtkErrorMacro(<< "AddCamera at t = " << lct::formatNumber(t) << ": " << mismatch
                   << "; key rejected.");
     return 0;
   }

@@ -102,22 +102,12 @@ int vtkCameraPathMetric::AddKeyCamera(double t, vtkCamera* camera)
     {
       continue;
     }
-    if (key->GetParallelProjection() != camera->GetParallelProjection())
+    const std::string mismatch = vtkLCTCamera::KindMismatch(camera->GetParallelProjection() != 0,
+      camera->GetUseHorizontalViewAngle() != 0, key->GetParallelProjection() != 0,
+      key->GetUseHorizontalViewAngle() != 0);
+    if (!mismatch.empty())
     {
-      vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": a "
-                    << (camera->GetParallelProjection() ? "parallel" : "perspective")
-                    << " key cannot be mixed with "
-                    << (key->GetParallelProjection() ? "parallel" : "perspective")
-                    << " keys (ParallelProjection); keys unchanged.");
-      return 0;
-    }
-    if (key->GetUseHorizontalViewAngle() != camera->GetUseHorizontalViewAngle())
-    {
-      vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": a key whose view angle is "
-                    << (camera->GetUseHorizontalViewAngle() ? "horizontal" : "vertical")
-                    << " (UseHorizontalViewAngle) cannot be mixed with keys whose view angle is "
-                    << (key->GetUseHorizontalViewAngle() ? "horizontal" : "vertical")
-                    << "; keys unchanged.");
+      vtkErrorMacro(<< "AddKeyCamera at t = " << t << ": " << mismatch << "; keys unchanged.");
       return 0;
     }
   }

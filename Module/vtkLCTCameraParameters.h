@@ -10,6 +10,8 @@
 
 #include "vtkCamera.h"
 
+#include <string>
+
 namespace vtkLCTCamera
 {
 
@@ -61,6 +63,29 @@ inline void ToVtk(const lct::CameraParameters& c, vtkCamera* camera)
   camera->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);
   camera->SetViewShear(c.viewShear[0], c.viewShear[1], c.viewShear[2]);
   camera->SetClippingRange(c.clippingRange[0], c.clippingRange[1]);
+}
+
+/// Why a key camera of these kinds cannot join keys of the other kinds, or "": a parallel
+/// key with perspective ones, or view angles measured horizontally with vertical ones. Every
+/// sample of a path takes one projection and one kind of angle (vtkCameraInterpolator sets
+/// neither), and the two angles measure different things (a horizontal 60 degrees is a vertical
+/// 32 at aspect 2), so neither key's view would be reproduced or measured.
+inline std::string KindMismatch(
+  bool parallel, bool horizontal, bool otherParallel, bool otherHorizontal)
+{
+  if (parallel != otherParallel)
+  {
+    return std::string("a ") + (parallel ? "parallel" : "perspective") +
+      " key cannot be mixed with " + (otherParallel ? "parallel" : "perspective") + " keys";
+  }
+  if (horizontal != otherHorizontal)
+  {
+    return std::string("a key whose view angle is ") + (horizontal ? "horizontal" : "vertical") +
+      " (UseHorizontalViewAngle " + (horizontal ? "on" : "off") +
+      ") cannot be mixed with keys whose view angle is " +
+      (otherHorizontal ? "horizontal" : "vertical");
+  }
+  return "";
 }
 
 } // namespace vtkLCTCamera
