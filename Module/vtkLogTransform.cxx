@@ -10,7 +10,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkPoints.h"
 
 #include <Eigen/SVD>
 
@@ -534,28 +533,6 @@ void vtkLogTransform::TransformNormals(vtkDataArray* inNms, vtkDataArray* outNms
     const Eigen::Vector3d transformed =
       inverseTransposeTimes(inverse, Eigen::Vector3d(normal[0], normal[1], normal[2]));
     outNms->InsertNextTuple(transformed.data());
-  }
-}
-
-void vtkLogTransform::TransformPointsNormalsVectors(vtkPoints* inPts, vtkPoints* outPts,
-  vtkDataArray* inNms, vtkDataArray* outNms, vtkDataArray* inVrs, vtkDataArray* outVrs,
-  int nOptionalVectors, vtkDataArray** inVrsArr, vtkDataArray** outVrsArr)
-{
-  this->TransformPoints(inPts, outPts);
-  if (inNms)
-  {
-    this->TransformNormals(inNms, outNms);
-  }
-  if (inVrs)
-  {
-    this->TransformVectors(inVrs, outVrs);
-  }
-  if (inVrsArr)
-  {
-    for (int i = 0; i < nOptionalVectors; ++i)
-    {
-      this->TransformVectors(inVrsArr[i], outVrsArr[i]);
-    }
   }
 }
 

@@ -174,11 +174,10 @@ public:
    * determinant overflows beyond a scale of ~5e102 (zero normals; NaN through
    * vtkTransformPolyDataFilter) and underflows below ~1e-103 (the matrix left uninverted: the
    * rotation of every normal reversed); these hold at any scale a vtkLogTransform accepts.
+   * (vtkLinearTransform::TransformPointsNormalsVectors, which vtkTransformPolyDataFilter calls,
+   * goes through TransformNormals.)
    */
   void TransformNormals(vtkDataArray* inNms, vtkDataArray* outNms) override;
-  void TransformPointsNormalsVectors(vtkPoints* inPts, vtkPoints* outPts, vtkDataArray* inNms,
-    vtkDataArray* outNms, vtkDataArray* inVrs, vtkDataArray* outVrs, int nOptionalVectors = 0,
-    vtkDataArray** inVrsArr = nullptr, vtkDataArray** outVrsArr = nullptr) override;
   void InternalTransformNormal(const float in[3], float out[3]) override;
   void InternalTransformNormal(const double in[3], double out[3]) override;
   ///@}
