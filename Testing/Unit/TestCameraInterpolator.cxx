@@ -5,8 +5,10 @@
 #include "RandomTransforms.h"
 #include "VtkTestHelpers.h"
 #include "lct/CameraKey.h"
+#include "vtkLCTCameraParameters.h"
 
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 
@@ -985,5 +987,109 @@ TEST(CameraInterpolatorLCT, InitializeReportsTheNextClampAgain)
     ASSERT_EQ(path->InterpolateCamera(-1.0, out), 1);
     ASSERT_EQ(path->InterpolateCamera(-2.0, out), 1);
     EXPECT_EQ(warnings->Count, round) << warnings->Last;
+  }
+}
+
+// Speed (session 31): the interpolated camera's frame is written with one rebuild of vtkCamera's
+// view and camera-light transforms instead of one per frame setter. The state must be the one
+// the public setters leave, bit for bit: every stored vector, the distance, the direction of
+// projection and view plane normal (oblique views included), and every matrix a renderer asks
+// for, whatever the camera showed before; and observers still hear of the change.
+TEST(CameraInterpolatorLCT, CamerasAreWrittenAsTheirSettersWouldWriteThem)
+{
+  lct_test::RandomTransforms random(3101);
+  const auto matrixOf = [](vtkMatrix4x4* m) { return lct_test::fromVtk(m); };
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    lct::CameraParameters c;
+    // (Cameras nearer to their focal point than 1e-20 are refused as keys: the clamp is
+    // DistancesAtVtkCamerasMinimumKeepTheirDirection's.)
+    const double scale = std::pow(10.0, random.Uniform(-15.0, 150.0));
+    c.focalPoint = scale * Eigen::Vector3d(random.Normal(), random.Normal(), random.Normal());
+    c.position = c.focalPoint + scale * random.LogUniform(0.01, 100.0) * random.UnitVector();
+    // View up of any length (SetViewUp normalises it), not orthogonal to the view.
+    c.viewUp = random.LogUniform(1e-3, 1e3) * random.UnitVector();
+    c.parallelProjection = trial % 3 == 0;
+    c.horizontalViewAngle = trial % 5 == 0;
+    c.viewAngle = random.Uniform(1.0, 120.0);
+    c.parallelScale = scale * random.LogUniform(0.1, 10.0);
+    c.windowCenter = Eigen::Vector2d(random.Uniform(-1.0, 1.0), random.Uniform(-1.0, 1.0));
+    c.viewShear = trial % 4 == 0 ? Eigen::Vector3d(0, 0, 1)
+                                 : Eigen::Vector3d(random.Uniform(-0.5, 0.5),
+                                     random.Uniform(-0.5, 0.5), random.Uniform(0.5, 1.5));
+    const double d = (c.position - c.focalPoint).norm();
+    c.clippingRange = Eigen::Vector2d(0.01 * d, 10.0 * d);
+
+    vtkNew<vtkCamera> bySetters, byWriter;
+    for (vtkCamera* camera : { bySetters.Get(), byWriter.Get() })
+    {
+      // The same earlier view for both (every fourth trial: the frame is already the new one).
+      if (trial % 4 == 1)
+      {
+        camera->SetFocalPoint(c.focalPoint.data());
+        camera->SetPosition(c.position.data());
+        camera->SetViewUp(c.viewUp.data());
+      }
+      else
+      {
+        camera->SetPosition(1.0, 2.0, 3.0);
+        camera->SetFocalPoint(-1.0, 0.5, 0.0);
+        camera->SetViewUp(0.0, 0.0, 1.0);
+      }
+    }
+    bySetters->SetFocalPoint(c.focalPoint.data());
+    bySetters->SetPosition(c.position.data());
+    bySetters->SetViewUp(c.viewUp.data());
+    bySetters->SetParallelProjection(c.parallelProjection);
+    bySetters->SetUseHorizontalViewAngle(c.horizontalViewAngle);
+    bySetters->SetParallelScale(c.parallelScale);
+    bySetters->SetViewAngle(c.viewAngle);
+    bySetters->SetWindowCenter(c.windowCenter[0], c.windowCenter[1]);
+    bySetters->SetViewShear(c.viewShear[0], c.viewShear[1], c.viewShear[2]);
+    bySetters->SetClippingRange(c.clippingRange[0], c.clippingRange[1]);
+
+    vtkNew<ErrorCounter> modified; // counts ModifiedEvents here
+    byWriter->AddObserver(vtkCommand::ModifiedEvent, modified);
+    const vtkMTimeType before = byWriter->GetMTime();
+    vtkLCTCamera::ToVtk(c, byWriter);
+    if (trial % 4 != 1)
+    {
+      EXPECT_GT(byWriter->GetMTime(), before) << trial;
+      EXPECT_GE(modified->Count, 1) << trial;
+    }
+
+    for (int i = 0; i < 3; ++i)
+    {
+      ASSERT_EQ(byWriter->GetPosition()[i], bySetters->GetPosition()[i]) << trial;
+      ASSERT_EQ(byWriter->GetFocalPoint()[i], bySetters->GetFocalPoint()[i]) << trial;
+      ASSERT_EQ(byWriter->GetViewUp()[i], bySetters->GetViewUp()[i]) << trial;
+      ASSERT_EQ(byWriter->GetDirectionOfProjection()[i], bySetters->GetDirectionOfProjection()[i])
+        << trial;
+      ASSERT_EQ(byWriter->GetViewPlaneNormal()[i], bySetters->GetViewPlaneNormal()[i]) << trial;
+      ASSERT_EQ(byWriter->GetViewShear()[i], bySetters->GetViewShear()[i]) << trial;
+    }
+    ASSERT_EQ(byWriter->GetDistance(), bySetters->GetDistance()) << trial;
+    ASSERT_EQ(byWriter->GetParallelProjection(), bySetters->GetParallelProjection());
+    ASSERT_EQ(byWriter->GetUseHorizontalViewAngle(), bySetters->GetUseHorizontalViewAngle());
+    ASSERT_EQ(byWriter->GetViewAngle(), bySetters->GetViewAngle());
+    ASSERT_EQ(byWriter->GetParallelScale(), bySetters->GetParallelScale());
+    ASSERT_EQ(byWriter->GetWindowCenter()[0], bySetters->GetWindowCenter()[0]);
+    ASSERT_EQ(byWriter->GetWindowCenter()[1], bySetters->GetWindowCenter()[1]);
+    ASSERT_EQ(byWriter->GetClippingRange()[0], bySetters->GetClippingRange()[0]);
+    ASSERT_EQ(byWriter->GetClippingRange()[1], bySetters->GetClippingRange()[1]);
+    ASSERT_EQ(byWriter->GetThickness(), bySetters->GetThickness());
+    ASSERT_EQ(
+      matrixOf(byWriter->GetViewTransformMatrix()), matrixOf(bySetters->GetViewTransformMatrix()))
+      << trial;
+    ASSERT_EQ(matrixOf(byWriter->GetCameraLightTransformMatrix()),
+      matrixOf(bySetters->GetCameraLightTransformMatrix()))
+      << trial;
+    ASSERT_EQ(matrixOf(byWriter->GetCompositeProjectionTransformMatrix(1.5, -1.0, 1.0)),
+      matrixOf(bySetters->GetCompositeProjectionTransformMatrix(1.5, -1.0, 1.0)))
+      << trial;
+    ASSERT_EQ(
+      std::vector<double>(byWriter->GetOrientationWXYZ(), byWriter->GetOrientationWXYZ() + 4),
+      std::vector<double>(bySetters->GetOrientationWXYZ(), bySetters->GetOrientationWXYZ() + 4))
+      << trial;
   }
 }
