@@ -758,3 +758,93 @@ TEST(vtkTransformInterpolatorLCT, TwoKeysWithAnIllConditionedOneAreAccurateOrRef
     }
   }
 }
+
+// Speed (session 31): the Spline's monotone tangents are cached per key. After every kind of
+// edit, made after evaluations, the curve must be the one a fresh interpolator with the same
+// keys and settings gives: a key added, one replaced in place, one removed, the parametrisation
+// switched (new logs), Initialize and new keys, the monotone tangents turned off and on.
+TEST(TransformInterpolatorLCT, CachedTangentsFollowEveryEditOfTheKeys)
+{
+  // A keyframed walk (<= 30 degrees and 15 % of stretch per key) at uneven times: every
+  // stencil has its MatrixLog logs too.
+  lct_test::RandomTransforms random(3102);
+  std::vector<std::pair<double, Eigen::Matrix4d>> keys;
+  Eigen::Matrix4d walk = Eigen::Matrix4d::Identity();
+  for (double t = 0.0; keys.size() < 7; t += random.Uniform(0.3, 2.0))
+  {
+    keys.emplace_back(t, walk);
+    walk = random.KeyframeStep() * walk;
+  }
+  vtkNew<vtkTransformInterpolatorLCT> edited;
+  std::vector<std::pair<double, Eigen::Matrix4d>> current;
+  bool monotone = true;
+  int parametrisation = vtkTransformInterpolatorLCT::POLAR;
+  const auto add = [&](double t, const Eigen::Matrix4d& m) {
+    vtkNew<vtkMatrix4x4> matrix;
+    toVtk(m, matrix);
+    ASSERT_EQ(edited->AddTransform(t, matrix), 1);
+    current.erase(std::remove_if(current.begin(), current.end(),
+                    [t](const std::pair<double, Eigen::Matrix4d>& k) { return k.first == t; }),
+      current.end());
+    current.emplace_back(t, m);
+  };
+  const auto compare = [&](const char* after) {
+    vtkNew<vtkTransformInterpolatorLCT> fresh;
+    fresh->SetParametrisation(parametrisation);
+    fresh->SetMonotoneTangents(monotone);
+    for (const auto& k : current)
+    {
+      vtkNew<vtkMatrix4x4> matrix;
+      toVtk(k.second, matrix);
+      ASSERT_EQ(fresh->AddTransform(k.first, matrix), 1) << after;
+    }
+    const double t0 = edited->GetMinimumT(), t1 = edited->GetMaximumT();
+    ASSERT_EQ(t0, fresh->GetMinimumT());
+    ASSERT_EQ(t1, fresh->GetMaximumT());
+    for (int s = 0; s <= 60; ++s)
+    {
+      const double t = t0 + (t1 - t0) * s / 60.0;
+      vtkNew<vtkMatrix4x4> a, b;
+      ASSERT_EQ(edited->InterpolateTransform(t, a), 1) << after;
+      ASSERT_EQ(fresh->InterpolateTransform(t, b), 1) << after;
+      const Eigen::Matrix4d difference = fromVtk(a) - fromVtk(b);
+      ASSERT_LE(difference.cwiseAbs().maxCoeff(), 1e-12 * fromVtk(b).cwiseAbs().maxCoeff())
+        << after << " at t = " << t;
+    }
+  };
+  for (int k = 0; k < 5; ++k)
+  {
+    add(keys[k].first, keys[k].second);
+  }
+  compare("the first keys");
+  add(keys[5].first, keys[5].second);
+  compare("a key added at the end");
+  add(0.5 * (keys[1].first + keys[2].first), keys[6].second);
+  compare("a key added between two");
+  add(keys[3].first,
+    keys[3].second *
+      lct::makeAffine(Eigen::Matrix3d::Identity() * 1.5, Eigen::Vector3d(0.3, -0.2, 0.1)));
+  compare("a key replaced in place");
+  ASSERT_EQ(edited->RemoveTransform(keys[2].first), 1);
+  current.erase(
+    std::remove_if(current.begin(), current.end(),
+      [&](const std::pair<double, Eigen::Matrix4d>& k) { return k.first == keys[2].first; }),
+    current.end());
+  compare("a key removed");
+  parametrisation = vtkTransformInterpolatorLCT::MATRIX_LOG;
+  ASSERT_EQ(edited->SetParametrisation(parametrisation), 1);
+  compare("MatrixLog");
+  monotone = false;
+  edited->SetMonotoneTangents(monotone);
+  compare("Catmull-Rom");
+  monotone = true;
+  edited->SetMonotoneTangents(monotone);
+  compare("monotone again");
+  edited->Initialize();
+  current.clear();
+  for (int k = 6; k >= 3; --k)
+  {
+    add(keys[k].first + 0.25, keys[k].second);
+  }
+  compare("Initialize and new keys");
+}
