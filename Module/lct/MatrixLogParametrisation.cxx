@@ -2,6 +2,7 @@
 
 #include "lct/AccurateMinors.h"
 #include "lct/Affine.h"
+#include "lct/AffineExp.h"
 #include "lct/Conditioning.h"
 #include "lct/DividedDifferences.h"
 #include "lct/PolarDecomposition.h"
@@ -305,20 +306,36 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
   {
     return R::failure(Status::OutOfRange);
   }
-  const BlockFunction block = blockFunction(ScalarFunction::Exp, l, translationPart(c), 0.0);
-  if (block.status != Status::Ok)
+  // Logs of moderate size (turns up to 5.6 rad, stretches up to e^8) by scaling and squaring:
+  // 4-10x faster than the Schur form and at least as accurate there (lct/AffineExp.h).
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d translation;
+  if (affineExpBySquaring(l, translationPart(c), linear, translation))
   {
-    return R::failure(block.status);
+    if (!linear.allFinite() || !translation.allFinite())
+    {
+      return R::failure(Status::OutOfRange); // a translation near the end of the double range
+    }
+  }
+  else
+  {
+    const BlockFunction block = blockFunction(ScalarFunction::Exp, l, translationPart(c), 0.0);
+    if (block.status != Status::Ok)
+    {
+      return R::failure(block.status);
+    }
+    linear = block.linear;
+    translation = block.translation;
   }
   // det exp(L) = e^tr(L): a result below the normal range, or one too ill-conditioned to hold
   // its smallest stretch, is refused like the same matrix given to matrixLog. exp(L) is never
   // singular: a smallest singular value that rounded to 0 is an underflow, OutOfRange.
-  Status range = checkRange(block.linear, l.trace());
+  Status range = checkRange(linear, l.trace());
   if (range == Status::MagnitudeOutOfRange)
   {
     // A representable result beyond the parametrisation's 1e+-135 (e^320 I = 1e139 I) is
     // refused for that reason, which Polar does not share, not as out of double's range.
-    const bool representable = block.linear.allFinite() && std::abs(l.trace()) <= 3.0 * 700.0;
+    const bool representable = linear.allFinite() && std::abs(l.trace()) <= 3.0 * 700.0;
     range = representable ? Status::MagnitudeOutOfRange : Status::OutOfRange;
   }
   range = range == Status::Singular ? Status::OutOfRange : range;
@@ -326,7 +343,7 @@ Result<Eigen::Matrix4d> matrixExp(const LogCoords& c)
   {
     return R::failure(range);
   }
-  return { makeAffine(block.linear, block.translation), Status::Ok };
+  return { makeAffine(linear, translation), Status::Ok };
 }
 
 Result<Eigen::Matrix4d> matrixPower(const Eigen::Matrix4d& m, double s)

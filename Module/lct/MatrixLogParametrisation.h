@@ -5,11 +5,14 @@
  * log [A t; 0 1] = [log A, g(A) t; 0 0]  with g(x) = log(x)/(x - 1) = log[x, 1]
  * exp [L u; 0 0] = [exp L, h(L) u; 0 1]  with h(x) = (e^x - 1)/x  = exp[x, 0]
  *
- * Both are evaluated on the real Schur form A = Q T Q^T (Eigen's RealSchur): every entry of
- * f(T) is a sum of products of T's entries with divided differences of f at the eigenvalues
- * (and at the extra node 1 for log, 0 for exp, which gives the translation block), accurate for
- * close and coincident eigenvalues (lct/DividedDifferences.h). Nothing is formed as a polynomial
- * in A itself, which would cancel for spread spectra (diag(1e-6, 1, 1e6) lost 4 digits that way).
+ * exp of a log with ||L||_1 <= kAffineExpNormLimit (turns up to 5.6 rad, stretches up to e^8)
+ * is a scaled and squared Taylor polynomial (lct/AffineExp.h), as accurate there and ~4-10x
+ * faster. Larger exps, and every log, are evaluated on the real Schur form A = Q T Q^T (Eigen's
+ * RealSchur): every entry of f(T) is a sum of products of T's entries with divided differences
+ * of f at the eigenvalues (and at the extra node 1 for log, 0 for exp, which gives the
+ * translation block), accurate for close and coincident eigenvalues (lct/DividedDifferences.h).
+ * Nothing is formed as a polynomial in A itself, which would cancel for spread spectra
+ * (diag(1e-6, 1, 1e6) lost 4 digits that way; the Taylor path's spectra stay within e^+-8).
  * Alexa App. A: a real logarithm exists only without negative real eigenvalues; such input fails
  * with NoRealLogarithm. Near the negative real axis the log is ill-conditioned, so there the
  * result is checked a posteriori (exp(log M) against M) and refused if inaccurate. Domain:
