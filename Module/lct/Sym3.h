@@ -12,9 +12,10 @@
  * eigenvalues nearly coincide, so the result keeps full accuracy there too (the naive form
  * of eq. 7 loses about six digits).
  *
- * exp of a Y whose traceless part Z is small (||Z||_F <= 1, the usual case for the relative
- * logs of interpolation) skips the cubic: Cayley-Hamilton (Z^3 = p Z + q I) folds the
- * exponential series of Z onto three scalars, e^(tr Y / 3) (a I + b Z + c Z^2).
+ * exp of a Y whose traceless part Z is moderate (||Z||_F <= 4: stretches up to ~e^3.3, every
+ * relative log of interpolation) skips the cubic: Cayley-Hamilton (Z^3 = p Z + q I) folds the
+ * exponential series of Z 2^-s (||Z 2^-s||_F <= 1) onto three scalars, squared s times on those
+ * scalars, e^(tr Y / 3) (a I + b Z + c Z^2).
  *
  * Spread spectra (condition number above kClosedFormConditionLimit, lct/Conditioning.h) are
  * evaluated from the eigenvectors of a backward-stable solver instead (Eigen's
