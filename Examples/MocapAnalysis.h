@@ -54,7 +54,9 @@ inline void ScanBVHHeader(const std::string& path, Clip& clip)
   clip.channels = 0;
   std::ifstream in(path);
   std::string word;
-  bool bvh = static_cast<bool>(in >> word) && word == "HIERARCHY";
+  // A UTF-8 byte-order mark before HIERARCHY is read as BVH too (vtkSkeletonAnimationReader).
+  bool bvh = static_cast<bool>(in >> word) &&
+    (word == "HIERARCHY" || word == "\xEF\xBB\xBFHIERARCHY");
   bool orderFound = false;
   while (bvh && in >> word && word != "MOTION")
   {

@@ -33,6 +33,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -113,15 +114,16 @@ struct BVHText
     bool positions = false; ///< an Xposition, Yposition or Zposition among them
     std::vector<std::string> channelNames; ///< in order
   };
-  std::vector<Joint> joints; ///< every ROOT and JOINT in file order: assimp's channel order
-  long endSites = 0;         ///< End Site blocks (joints of the skeleton too)
-  long channels = 0;         ///< values per frame (the sum of the CHANNELS counts)
-  std::string problem;       ///< why the MOTION section cannot be read ("": it can)
-  std::string declared;      ///< the count the Frames: line declares, as written
-  std::string frameTime;     ///< the Frame Time: value, as written
-  long rows = 0;             ///< data rows (lines holding values) after the Frame Time: value
-  long badLine = 0;          ///< the first data row without `channels` values (0: none)
-  long badValues = 0;        ///< and its number of values
+  std::vector<Joint> joints;  ///< every ROOT and JOINT in file order: assimp's channel order
+  long endSites = 0;          ///< End Site blocks (joints of the skeleton too)
+  long channels = 0;          ///< values per frame (the sum of the CHANNELS counts)
+  std::string problem;        ///< why the MOTION section cannot be read ("": it can)
+  bool byteOrderMark = false; ///< the file starts with UTF-8's EF BB BF (Windows editors)
+  std::string declared;       ///< the count the Frames: line declares, as written
+  std::string frameTime;      ///< the Frame Time: value, as written
+  long rows = 0;              ///< data rows (lines holding values) after the Frame Time: value
+  long badLine = 0;           ///< the first data row without `channels` values (0: none)
+  long badValues = 0;         ///< and its number of values
   /// The first rotation value assimp reads beyond kMaxRotationDegrees (line 0: none).
   struct
   {
@@ -201,6 +203,12 @@ bool scanBVH(const std::string& file, BVHText& text)
   {
     return false;
   }
+  // A UTF-8 byte-order mark before HIERARCHY: the text is BVH all the same.
+  char mark[3] = {};
+  text.byteOrderMark =
+    in.read(mark, 3) && mark[0] == '\xEF' && mark[1] == '\xBB' && mark[2] == '\xBF';
+  in.clear();
+  in.seekg(text.byteOrderMark ? 3 : 0);
   BVHTokens tokens(in);
   long line = 0;
   if (tokens.Next(line) != "HIERARCHY")
@@ -454,8 +462,22 @@ bool vtkSkeletonAnimationReader::Load()
     return false;
   }
   Assimp::Importer importer;
-  // No post-processing: the node hierarchy and the keys as the file has them.
-  const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
+  // No post-processing: the node hierarchy and the keys as the file has them. assimp's BVH
+  // loader takes a byte-order mark for the first token ("Expected header string HIERARCHY"), so
+  // such a file is handed over without it.
+  const aiScene* scene = nullptr;
+  if (isBVH && bvh.byteOrderMark)
+  {
+    std::ifstream in(file, std::ios::binary);
+    in.seekg(3);
+    const std::string text{ std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+    scene =
+      importer.ReadFileFromMemory(text.data(), text.size(), aiProcess_ValidateDataStructure, "bvh");
+  }
+  else
+  {
+    scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
+  }
   if (!scene || !scene->mRootNode)
   {
     vtkErrorMacro(<< file << ": not readable as an animation file: " << importer.GetErrorString());

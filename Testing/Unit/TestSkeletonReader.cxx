@@ -33,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -154,6 +155,50 @@ TEST_P(SkeletonReaderOnClips, ForwardKinematicsMatchesADirectEvaluationOfTheFile
 
 INSTANTIATE_TEST_SUITE_P(
   CMU, SkeletonReaderOnClips, ::testing::Values("01_01.bvh", "01_03.bvh", "Boxing_Toes.bvh"));
+
+TEST(SkeletonReader, AByteOrderMarkBeforeTheHierarchyReadsLikeTheFileWithoutIt)
+{
+  // Windows editors save UTF-8 with EF BB BF in front; assimp's BVH loader read it as part of the
+  // first token ("Expected header string HIERARCHY"), so such a file was refused.
+  if (!haveData())
+  {
+    GTEST_SKIP() << "assimp-testmodels not installed";
+  }
+  const std::string path = kData + "01_01.bvh";
+  std::ifstream in(path, std::ios::binary);
+  const std::string text{ std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+  const std::string marked = temporaryFile("bom.bvh", "\xEF\xBB\xBF" + text);
+  Watched plain, bom;
+  plain.reader->SetFileName(path.c_str());
+  plain.reader->Update();
+  bom.reader->SetFileName(marked.c_str());
+  bom.reader->Update();
+  ASSERT_EQ(bom.errors->Count, 0) << bom.errors->Last;
+  ASSERT_EQ(plain.errors->Count, 0) << plain.errors->Last;
+  const lct::SkeletalAnimation* a = plain.reader->GetAnimation();
+  const lct::SkeletalAnimation* b = bom.reader->GetAnimation();
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->frames, b->frames);
+  EXPECT_EQ(a->frameTime, b->frameTime);
+  ASSERT_EQ(a->jointCount(), b->jointCount());
+  for (int j = 0; j < a->jointCount(); ++j)
+  {
+    EXPECT_EQ(a->joints[j].name, b->joints[j].name);
+  }
+  EXPECT_TRUE(a->locals == b->locals);
+  EXPECT_EQ(
+    plain.reader->GetOutput()->GetNumberOfPoints(), bom.reader->GetOutput()->GetNumberOfPoints());
+  // A mark followed by no BVH is still refused, naming the file.
+  const std::string notBVH = temporaryFile("bom-garbage.bvh",
+    "\xEF\xBB\xBF"
+    "HIERARCHY\nROOT");
+  Watched w;
+  w.reader->SetFileName(notBVH.c_str());
+  w.reader->Update();
+  EXPECT_EQ(w.errors->Count, 1);
+  EXPECT_NE(w.errors->Last.find(notBVH), std::string::npos) << w.errors->Last;
+  EXPECT_EQ(w.reader->GetNumberOfJoints(), 0);
+}
 
 TEST(SkeletonReader, TimeStepsDrivePipelineUpdates)
 {
