@@ -1,10 +1,11 @@
 // exp of affine logs [L t; 0 0] by scaling and squaring (lct/AffineExp.h), against Eigen's
 // MatrixFunctions in long double (64-bit mantissa), on the logs it accepts: normal and strongly
-// non-normal L up to the norm limit, turns up to the limit's half turn, translations of any size.
+// non-normal L up to the norm limit (turns up to 5.6 rad and beyond), translations of any size.
 #include "lct/AffineExp.h"
 #include "lct/Conditioning.h"
 #include "lct/LogCoords.h"
 #include "lct/MatrixLogParametrisation.h"
+#include "lct/SO3.h"
 #include "lct/Sym3.h"
 
 #include "RandomTransforms.h"
@@ -19,13 +20,6 @@
 namespace
 {
 using Matrix4l = Eigen::Matrix<long double, 4, 4>;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& w)
-{
-  Eigen::Matrix3d s;
-  s << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return s;
-}
 
 /// The classes of L swept; each is scaled to a 1-norm drawn uniformly in (0, limit].
 enum class LogClass
@@ -53,14 +47,14 @@ Eigen::Matrix3d randomLog(lct_test::RandomTransforms& random, LogClass c)
   switch (c)
   {
     case LogClass::Rotation:
-      l = skew(random.UnitVector());
+      l = lct::hat(random.UnitVector());
       break;
     case LogClass::Symmetric:
       l = Eigen::Matrix3d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return random.Normal(); });
       l = 0.5 * (l + l.transpose()).eval();
       break;
     case LogClass::Similarity:
-      l = skew(random.UnitVector()) + random.Uniform(-1.0, 1.0) * Eigen::Matrix3d::Identity();
+      l = lct::hat(random.UnitVector()) + random.Uniform(-1.0, 1.0) * Eigen::Matrix3d::Identity();
       break;
     case LogClass::Gaussian:
       l = Eigen::Matrix3d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return random.Normal(); });
@@ -179,8 +173,7 @@ TEST(AffineExp, AgreesWithTheSchurPathAcrossTheNormLimit)
     lct::LogCoords inside, beyond;
     const auto coords = [&](const Eigen::Matrix3d& m, lct::LogCoords& c) {
       lct::translationPart(c) = t;
-      lct::rotationPart(c) =
-        0.5 * Eigen::Vector3d(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+      lct::rotationPart(c) = lct::vee(m);
       lct::symmetricPart(c) = lct::toSymmetricVector(0.5 * (m + m.transpose()));
     };
     coords(l, inside);
@@ -208,11 +201,11 @@ TEST(AffineExp, KeepsExactStructureAndRefusesWhatItDoesNotEvaluate)
   }
   // No translation: exactly none (linear maps stay linear under blending).
   const Eigen::Matrix3d l =
-    2.0 * skew(Eigen::Vector3d(0.3, -0.5, 0.2)) + 0.4 * Eigen::Matrix3d::Identity();
+    2.0 * lct::hat(Eigen::Vector3d(0.3, -0.5, 0.2)) + 0.4 * Eigen::Matrix3d::Identity();
   ASSERT_TRUE(lct::affineExpBySquaring(l, Eigen::Vector3d::Zero(), linear, translation));
   EXPECT_EQ(translation, Eigen::Vector3d::Zero());
   // A turn is a rotation: orthogonal to round-off, at the limit's many squarings too.
-  const Eigen::Matrix3d turn = skew(5.6 * Eigen::Vector3d(0.6, 0.0, 0.8));
+  const Eigen::Matrix3d turn = lct::hat(5.6 * Eigen::Vector3d(0.6, 0.0, 0.8));
   ASSERT_TRUE(lct::affineExpBySquaring(turn, Eigen::Vector3d::Zero(), linear, translation));
   EXPECT_LT((linear.transpose() * linear - Eigen::Matrix3d::Identity()).norm(), 1e-14);
   EXPECT_NEAR(linear.determinant(), 1.0, 1e-14);
