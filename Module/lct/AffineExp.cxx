@@ -1,8 +1,8 @@
 #include "lct/AffineExp.h"
 
 #include "lct/Conditioning.h"
+#include "lct/InverseFactorials.h"
 
-#include <array>
 #include <cmath>
 
 namespace lct
@@ -12,15 +12,7 @@ namespace
 {
 constexpr int kTaylorDegree = 16;
 /// 1/k!, k = 0 .. kTaylorDegree.
-constexpr std::array<double, kTaylorDegree + 1> kInverseFactorial = [] {
-  std::array<double, kTaylorDegree + 1> f{};
-  f[0] = 1.0;
-  for (int k = 1; k <= kTaylorDegree; ++k)
-  {
-    f[k] = f[k - 1] / k;
-  }
-  return f;
-}();
+constexpr auto kInverseFactorial = inverseFactorials<kTaylorDegree + 1>();
 } // namespace
 
 bool affineExpBySquaring(const Eigen::Matrix3d& l, const Eigen::Vector3d& t,

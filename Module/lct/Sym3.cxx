@@ -3,10 +3,10 @@
 #include "lct/Conditioning.h"
 #include "lct/DividedDifferences.h"
 #include "lct/Eigenvalues3.h"
+#include "lct/InverseFactorials.h"
 
 #include <Eigen/Eigenvalues>
 
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -56,15 +56,7 @@ constexpr double kLn2 = 0.69314718055994530942;
 const double kClosedFormLogSpread = std::log(kClosedFormConditionLimit);
 constexpr int kSeriesTerms = 18;
 /// 1/n!, n = 0 .. kSeriesTerms - 1.
-constexpr std::array<double, kSeriesTerms> kInverseFactorial = [] {
-  std::array<double, kSeriesTerms> f{};
-  f[0] = 1.0;
-  for (int n = 1; n < kSeriesTerms; ++n)
-  {
-    f[n] = f[n - 1] / n;
-  }
-  return f;
-}();
+constexpr auto kInverseFactorial = inverseFactorials<kSeriesTerms>();
 
 /// Y = vectors diag(values) vectors^T from a backward-stable eigensolver (values descending).
 struct SymmetricEigen
