@@ -27,16 +27,16 @@ bool affineExpBySquaring(const Eigen::Matrix3d& l, const Eigen::Vector3d& t,
   {
     return false;
   }
-  // The least s with norm 2^-s <= kTaylorRadius (frexp: norm / radius < 2^s).
+  // The least s with norm 2^-s <= kTaylorRadius (norm / radius < 2^s).
   int s = 0;
   if (norm > kTaylorRadius)
   {
-    std::frexp(norm / kTaylorRadius, &s);
+    s = binaryExponent(norm / kTaylorRadius);
   }
   // Y = [L t_unit; 0 0] 2^-s, t_unit = t 2^-k of unit size: both scalings exact.
   const int k = unitScaleExponent(t);
   Eigen::Matrix4d y = Eigen::Matrix4d::Zero();
-  y.topLeftCorner<3, 3>() = std::ldexp(1.0, -s) * l;
+  y.topLeftCorner<3, 3>() = powerOfTwo(-s) * l;
   y.topRightCorner<3, 1>() = scaledByPowerOfTwo(scaledByPowerOfTwo(t, -k), -s);
 
   // Paterson & Stockmeyer: T16(Y) = B0 + Y^4 (B1 + Y^4 (B2 + Y^4 (B3 + Y^4 c16))), with

@@ -102,14 +102,13 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
   {
     return Eigen::Vector3d::Constant(shift);
   }
-  int e = 0;
-  std::frexp(largestB, &e);
-  const double b00 = std::ldexp(raw[0], -e);
-  const double b11 = std::ldexp(raw[1], -e);
-  const double b22 = std::ldexp(raw[2], -e);
-  const double b01 = std::ldexp(raw[3], -e);
-  const double b02 = std::ldexp(raw[4], -e);
-  const double b12 = std::ldexp(raw[5], -e);
+  const int e = binaryExponent(largestB);
+  const double b00 = timesPowerOfTwo(raw[0], -e);
+  const double b11 = timesPowerOfTwo(raw[1], -e);
+  const double b22 = timesPowerOfTwo(raw[2], -e);
+  const double b01 = timesPowerOfTwo(raw[3], -e);
+  const double b02 = timesPowerOfTwo(raw[4], -e);
+  const double b12 = timesPowerOfTwo(raw[5], -e);
   // tr(B^2)/6, a sum of squares: no cancellation.
   const double offDiagonal = b01 * b01 + b02 * b02 + b12 * b12;
   const double p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offDiagonal) / 6.0;
@@ -118,7 +117,7 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
     return Eigen::Vector3d::Constant(shift);
   }
   const double p = std::sqrt(p2);
-  const double scaledP = std::ldexp(p, e); // p of the unscaled B
+  const double scaledP = timesPowerOfTwo(p, e); // p of the unscaled B
   // det(B / p) / 2 lies in [-1, 1]; clamp against round-off.
   const double detB =
     b00 * (b11 * b22 - b12 * b12) - b01 * (b01 * b22 - b12 * b02) + b02 * (b01 * b12 - b11 * b02);
@@ -132,8 +131,8 @@ Eigen::Vector3d symmetricEigenvalues(const Eigen::Matrix3d& a)
     // The isolated root: the largest (2 p cos phi) for r near 1, the smallest near -1.
     const double isolated = r > 0.0 ? 2.0 * p * c : p * (-c - 2.0 * s);
     const Eigen::Vector3d l = nearDoubleRoot(b00, b11, b22, b01, b02, b12, isolated);
-    return Eigen::Vector3d(
-      shift + std::ldexp(l[0], e), shift + std::ldexp(l[1], e), shift + std::ldexp(l[2], e));
+    return Eigen::Vector3d(shift + timesPowerOfTwo(l[0], e), shift + timesPowerOfTwo(l[1], e),
+      shift + timesPowerOfTwo(l[2], e));
   }
   const double largest = shift + 2.0 * scaledP * c;
   const double smallest = shift + scaledP * (-c - 2.0 * s);
@@ -198,7 +197,7 @@ GeneralEigenvalues generalEigenvalues(const Eigen::Matrix3d& a)
   const double halfQ = halfQRaw / scale / scale / scale;
   const double discriminant = halfQ * halfQ + thirdP * thirdP * thirdP;
   // B's roots are scale 2^e times those of the normalised cubic.
-  const auto unscale = [scale, e](double x) { return std::ldexp(x * scale, e); };
+  const auto unscale = [scale, e](double x) { return timesPowerOfTwo(x * scale, e); };
   if (discriminant > 0.0 || thirdP >= 0.0)
   {
     // One real root and a conjugate pair (Cardano). u^3 is formed without cancellation and

@@ -112,7 +112,7 @@ namespace
 /// DBL_MIN, whose Polar log polarExp then refused.
 Status checkSmallestStretch(double unitSmallest, int exponent)
 {
-  return unitSmallest < std::ldexp(std::numeric_limits<double>::min(), -exponent)
+  return unitSmallest < timesPowerOfTwo(std::numeric_limits<double>::min(), -exponent)
     ? Status::OutOfRange
     : Status::Ok;
 }

@@ -164,13 +164,14 @@ Eigen::Matrix3d expSym(const Eigen::Matrix3d& y, Eigen::Vector2d* eigenvalueBoun
   {
     *eigenvalueBounds = Eigen::Vector2d(mean - radius, mean + radius);
   }
-  // W = Z 2^-s with ||W||_F <= kSeriesRadius (frexp: ||Z||_F < 2^s).
+  // W = Z 2^-s with ||W||_F <= kSeriesRadius (||Z||_F < 2^s).
   int squarings = 0;
   if (normSq > kSeriesRadius * kSeriesRadius)
   {
-    std::frexp(std::sqrt(normSq), &squarings);
+    squarings = binaryExponent(std::sqrt(normSq));
   }
-  const double w = std::ldexp(1.0, -squarings);
+  // squarings <= 3 (kSquaringRadius) here: 2^-squarings is normal.
+  const double w = powerOfTwo(-squarings);
   // Cayley-Hamilton for traceless W: W^3 = p W + q I with p = tr(W^2)/2, q = det W, so
   //   W (alpha I + beta W + gamma W^2) = q gamma I + (alpha + p gamma) W + beta W^2,
   // and Horner's rule for sum W^n/n! runs on the three scalars (a, b, c).
