@@ -4,8 +4,7 @@
 #include "lct/DividedDifferences.h"
 #include "lct/Eigenvalues3.h"
 #include "lct/InverseFactorials.h"
-
-#include <Eigen/Eigenvalues>
+#include "lct/SymmetricEigen3.h"
 
 #include <cmath>
 #include <limits>
@@ -58,24 +57,9 @@ constexpr int kSeriesTerms = 18;
 /// 1/n!, n = 0 .. kSeriesTerms - 1.
 constexpr auto kInverseFactorial = inverseFactorials<kSeriesTerms>();
 
-/// Y = vectors diag(values) vectors^T from a backward-stable eigensolver (values descending).
-struct SymmetricEigen
-{
-  Eigen::Vector3d values;
-  Eigen::Matrix3d vectors;
-};
-
-SymmetricEigen eigenDecompose(const Eigen::Matrix3d& y)
-{
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
-    Eigen::Matrix3d(y.selfadjointView<Eigen::Upper>()));
-  // Eigen sorts ascending.
-  return { solver.eigenvalues().reverse(), solver.eigenvectors().rowwise().reverse() };
-}
-
 /// f(Y) = V diag(f(l)) V^T: for spread spectra, where the Newton form about the middle
 /// eigenvalue cancels (it builds the small eigenvalues' part from terms the size of the largest).
-Eigen::Matrix3d applyEigen(ScalarFunction f, const SymmetricEigen& e)
+Eigen::Matrix3d applyEigen(ScalarFunction f, const SymmetricEigen3& e)
 {
   const Eigen::Vector3d fl = e.values.unaryExpr([f](double x) { return evaluate(f, x); });
   const Eigen::Matrix3d result = e.vectors * fl.asDiagonal() * e.vectors.transpose();
@@ -102,7 +86,7 @@ Result<Eigen::Matrix3d> applyPositive(ScalarFunction f, const Eigen::Matrix3d& s
   }
   else
   {
-    const SymmetricEigen eigen = eigenDecompose(unit);
+    const SymmetricEigen3 eigen = symmetricEigen3(unit);
     if (!(eigen.values[2] > 0.0))
     {
       return R::failure(Status::Singular);
@@ -153,7 +137,7 @@ Eigen::Matrix3d expSym(const Eigen::Matrix3d& y, Eigen::Vector2d* eigenvalueBoun
       }
       return applySymmetric(ScalarFunction::Exp, y, l);
     }
-    const SymmetricEigen eigen = eigenDecompose(y);
+    const SymmetricEigen3 eigen = symmetricEigen3(y);
     if (eigenvalueBounds)
     {
       *eigenvalueBounds = Eigen::Vector2d(eigen.values[2], eigen.values[0]);

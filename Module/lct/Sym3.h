@@ -18,8 +18,8 @@
  * scalars, e^(tr Y / 3) (a I + b Z + c Z^2).
  *
  * Spread spectra (condition number above kClosedFormConditionLimit, lct/Conditioning.h) are
- * evaluated from the eigenvectors of a backward-stable solver instead (Eigen's
- * SelfAdjointEigenSolver): the Newton form would build the smallest eigenvalue's part from terms
+ * evaluated from the eigenvectors of a backward-stable solver instead (cyclic Jacobi,
+ * lct/SymmetricEigen3.h): the Newton form would build the smallest eigenvalue's part from terms
  * the size of the largest. Input of any magnitude is scaled by a power of two (exact).
  *
  * Accuracy: about eps * cond(Y) relative; see Testing/Unit/TestSym3.cxx for the measured
