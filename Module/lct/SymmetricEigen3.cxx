@@ -2,9 +2,9 @@
 
 #include "lct/Conditioning.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace lct
 {
@@ -92,7 +92,17 @@ SymmetricEigen3 symmetricEigen3(const Eigen::Matrix3d& y)
   const auto& a = m.a;
   // Descending order, vectors with their values.
   int order[3] = { 0, 1, 2 };
-  std::sort(order, order + 3, [&a](int i, int j) { return a[i][i] > a[j][j]; });
+  // Three compare-exchanges, not std::sort: its comparator must be a strict weak order, which
+  // NaN (from input outside the contract) would break.
+  const auto exchange = [&a, &order](int i, int j) {
+    if (a[order[j]][order[j]] > a[order[i]][order[i]])
+    {
+      std::swap(order[i], order[j]);
+    }
+  };
+  exchange(0, 1);
+  exchange(1, 2);
+  exchange(0, 1);
   SymmetricEigen3 out;
   for (int k = 0; k < 3; ++k)
   {

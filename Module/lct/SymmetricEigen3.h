@@ -33,7 +33,8 @@ struct SymmetricEigen3
 };
 
 /// The eigen decomposition of the symmetric Y (only the upper triangle is read), Y finite and of
-/// any magnitude (it is scaled by a power of two inside). The number of sweeps is bounded.
+/// any magnitude (it is scaled by a power of two inside; an eigenvalue beyond the double range,
+/// possible only for entries above DBL_MAX / 3, is +-Inf). The number of sweeps is bounded.
 VTKLCT_EXPORT SymmetricEigen3 symmetricEigen3(const Eigen::Matrix3d& y);
 
 } // namespace lct

@@ -22,6 +22,7 @@
 #include "lct/PolarDecomposition.h"
 #include "lct/SO3.h"
 #include "lct/Sym3.h"
+#include "lct/SymmetricEigen3.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -198,6 +199,30 @@ void ExpSym(lct_fuzz::Input& in)
   if (!AllFinite(y))
   {
     return;
+  }
+  // The eigensolver behind the spread-spectrum branch (lct/SymmetricEigen3.h): backward stable
+  // at any finite magnitude, values descending, vectors orthogonal. |eigenvalue| <= 3 max|y_ij|,
+  // so the values are representable below DBL_MAX / 3 (above it they may overflow, as they must).
+  const lct::SymmetricEigen3 eigen = lct::symmetricEigen3(y);
+  const double size = y.cwiseAbs().maxCoeff();
+  const bool representable = size <= std::numeric_limits<double>::max() / 3.0;
+  LCT_FUZZ_CHECK(AllFinite(eigen.vectors) && (AllFinite(eigen.values) || !representable) &&
+      eigen.values[0] >= eigen.values[1] && eigen.values[1] >= eigen.values[2],
+    "symmetricEigen3: non-finite or unordered for\n"
+      << Show(y));
+  LCT_FUZZ_CHECK(
+    (eigen.vectors.transpose() * eigen.vectors - Eigen::Matrix3d::Identity()).norm() <= 1e-13,
+    "symmetricEigen3: vectors not orthogonal for\n"
+      << Show(y));
+  if (size > 0.0 && representable)
+  {
+    // Compared at unit size: the residual of a matrix near the ends of the range would overflow.
+    const Eigen::Matrix3d unitY = y / size;
+    const Eigen::Matrix3d rebuilt =
+      eigen.vectors * (eigen.values / size).asDiagonal() * eigen.vectors.transpose();
+    LCT_FUZZ_CHECK((rebuilt - unitY).norm() <= 1e-13 + kTiniest / size,
+      "symmetricEigen3: V diag(l) V^T != Y for\n"
+        << Show(y));
   }
   // Its eigenvalues are within +-||Y||_F, so below 700 exp(Y) is representable.
   if (y.norm() <= 700.0)

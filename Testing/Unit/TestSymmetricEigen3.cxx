@@ -148,3 +148,39 @@ TEST(SymmetricEigen3, ZeroAndScalarMatricesAreTheirOwnDecomposition)
     EXPECT_EQ(e.vectors.cwiseAbs().sum(), 3.0);
   }
 }
+
+TEST(SymmetricEigen3, EigenvaluesBeyondTheDoubleRangeAreInfWithOrthogonalVectors)
+{
+  // FuzzCorePieces D34: |eigenvalue| <= 3 max|y_ij| may exceed DBL_MAX. The values then overflow
+  // (as the exact ones would), but the vectors stay finite and orthogonal, and just below the
+  // range the values are finite and right.
+  constexpr double kMax = std::numeric_limits<double>::max();
+  Eigen::Matrix3d y;
+  y << 1e308, 1e308, -kMax, 1e308, 0.0, 1.9e-313, -kMax, 1.9e-313, 1.6e-306;
+  const lct::SymmetricEigen3 huge = lct::symmetricEigen3(y);
+  EXPECT_TRUE(huge.vectors.allFinite());
+  EXPECT_LT((huge.vectors.transpose() * huge.vectors - Eigen::Matrix3d::Identity()).norm(), 1e-15);
+  EXPECT_EQ(huge.values[0], std::numeric_limits<double>::infinity());
+
+  const Eigen::Matrix3d representable = y / 4.0;
+  const lct::SymmetricEigen3 e = lct::symmetricEigen3(representable);
+  ASSERT_TRUE(e.values.allFinite());
+  // The values of Y are 4 times those of Y / 4: Inf where that leaves the range, else the same.
+  for (int k = 0; k < 3; ++k)
+  {
+    const double expected = 4.0 * e.values[k];
+    if (std::isinf(expected))
+    {
+      EXPECT_EQ(huge.values[k], expected) << k;
+    }
+    else
+    {
+      EXPECT_NEAR(huge.values[k], expected, 1e-15 * kMax) << k;
+    }
+  }
+  // Compared at unit size (the residual itself would overflow).
+  const Eigen::Matrix3d unit = representable / kMax;
+  const Eigen::Matrix3d rebuilt =
+    e.vectors * (e.values / kMax).asDiagonal() * e.vectors.transpose();
+  EXPECT_LT((rebuilt - unit).norm(), 4.0 * kEps * unit.norm());
+}
