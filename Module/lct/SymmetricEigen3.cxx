@@ -31,7 +31,6 @@ template <int P, int Q, int R>
 bool rotate(JacobiState& m)
 {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
-  double* a = &m.a[0][0];
   const double apq = m.a[P][Q];
   const double app = m.a[P][P];
   const double aqq = m.a[Q][Q];
@@ -52,12 +51,12 @@ bool rotate(JacobiState& m)
   m.a[Q][Q] = aqq + t * apq;
   m.a[P][Q] = 0.0;
   // The entries coupling R to P and Q, stored above the diagonal.
-  constexpr int kRP = R < P ? 3 * R + P : 3 * P + R;
-  constexpr int kRQ = R < Q ? 3 * R + Q : 3 * Q + R;
-  const double gp = a[kRP];
-  const double gq = a[kRQ];
-  a[kRP] = gp - s * (gq + tau * gp);
-  a[kRQ] = gq + s * (gp - tau * gq);
+  double& arp = m.a[R < P ? R : P][R < P ? P : R];
+  double& arq = m.a[R < Q ? R : Q][R < Q ? Q : R];
+  const double gp = arp;
+  const double gq = arq;
+  arp = gp - s * (gq + tau * gp);
+  arq = gq + s * (gp - tau * gq);
   for (auto& row : m.v)
   {
     const double vp = row[P];
