@@ -13,7 +13,7 @@
  * below eps sqrt(|y_pp y_qq|): on graded positive definite matrices (D S D, D up to 1e12) it
  * measured 2.9e-15 relative where Eigen's SelfAdjointEigenSolver (tridiagonalisation and implicit
  * QR, which the core used before) gives 2.1e-9. It also takes fewer instructions for 3x3 (about
- * 1330 against 1580 per call on BenchCore's spread stretches: 8.6 rotations in 4.2 sweeps).
+ * 1280 against 1580 per call on BenchCore's spread stretches: 8.6 rotations in 4.2 sweeps).
  */
 #ifndef lct_SymmetricEigen3_h
 #define lct_SymmetricEigen3_h
