@@ -184,6 +184,9 @@ struct vtkTransformInterpolatorLCT::Internals
   /// ~20 % of a Spline evaluation when computed per call.
   std::atomic<bool> TangentsCurrent{ false };
   std::vector<lct::KeyTangent> Tangents;
+  /// With Tangents: how much each key is an impact (lct::impactWeight), which shapes the Spline
+  /// segments beside it.
+  std::vector<double> ImpactWeights;
   /// Whether a query outside the key range has been reported (once per interpolator).
   std::atomic<bool> ClampReported{ false };
   /// The timing controls, the point whose speed ConstantSpeed makes even, and its table.
@@ -244,16 +247,36 @@ struct vtkTransformInterpolatorLCT::Internals
       : lct::catmullRomTangent(times, n, k);
   }
 
-  /// Every key's monotone tangent (Tangents), rebuilt if stale; the key logs must be current.
+  /// lct::impactWeight of key k from its steps to the keys two either side (0 within two keys of
+  /// an end, or where a step is missing).
+  static double ImpactWeight(const lct::KeyLogs& logs, const double* times, int n, int k)
+  {
+    if (k < 2 || k + 2 >= n)
+    {
+      return 0.0;
+    }
+    const lct::LogCoords* outerPrevious = logs.relative(k - 2, k - 1);
+    const lct::LogCoords* previous = logs.relative(k - 1, k);
+    const lct::LogCoords* next = logs.relative(k + 1, k);
+    const lct::LogCoords* outerNext = logs.relative(k + 2, k + 1);
+    return outerPrevious && previous && next && outerNext
+      ? lct::impactWeight(*outerPrevious, *previous, *next, *outerNext, times + k - 2)
+      : 0.0;
+  }
+
+  /// Every key's monotone tangent (Tangents) and impact weight, rebuilt if stale; the key logs
+  /// must be current.
   const lct::KeyTangent* MonotoneTangents()
   {
     lct::rebuildOnce(this->TangentsCurrent, this->Mutex, [this] {
       const int n = static_cast<int>(this->Keys.size());
       const double* times = this->Keys.times().data();
       this->Tangents.resize(n);
+      this->ImpactWeights.resize(n);
       for (int k = 0; k < n; ++k)
       {
         this->Tangents[k] = MonotoneTangent(this->KeyLogs, times, n, k, true);
+        this->ImpactWeights[k] = ImpactWeight(this->KeyLogs, times, n, k);
       }
     });
     return this->Tangents.data();
@@ -262,29 +285,46 @@ struct vtkTransformInterpolatorLCT::Internals
   /// The Spline tangents of the segment holding t: Kochanek-Bartels at keys with tension,
   /// continuity or bias (lct/PathTiming.h), else the monotone tangent (lct/MonotoneTangents.h)
   /// from the steps from the key to its neighbours (lct::relativeLog), or Catmull-Rom's
-  /// when `monotone` is off; the end keys keep their one-sided tangents (the secant).
-  lct::SegmentTangents TangentsAt(
-    const lct::KeyLogs& logs, const double* times, int n, double t, bool monotone)
+  /// when `monotone` is off; the end keys keep their one-sided tangents (the secant). With the
+  /// monotone tangents and `straightenImpacts`, a segment beside an impact (lct::impactWeight) of
+  /// a key with the default tangent is nearly straight (its shape).
+  lct::SegmentTangents TangentsAt(const lct::KeyLogs& logs, const double* times, int n, double t,
+    bool monotone, bool straightenImpacts)
   {
     const lct::KeyTangent* cached =
       monotone && &logs == &this->KeyLogs ? this->MonotoneTangents() : nullptr;
     const auto defaultTangent = [&](int k) {
       return cached ? cached[k] : MonotoneTangent(logs, times, n, k, monotone);
     };
-    return lct::splineTangents(
-      times, n, lct::curveSegment(times, n, t), this->Timing,
-      [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; }, defaultTangent);
+    const auto timingOf = [this](int k) -> const lct::KeyTiming& { return this->Keys[k].Timing; };
+    const int segment = lct::curveSegment(times, n, t);
+    lct::SegmentTangents tangents =
+      lct::splineTangents(times, n, segment, this->Timing, timingOf, defaultTangent);
+    if (monotone && straightenImpacts && n > 1)
+    {
+      const auto impact = [&](int k) {
+        if (!lct::tensionContinuityBiasOf(timingOf(k), this->Timing).isZero())
+        {
+          return 0.0; // the key's own tangent: the user shapes it
+        }
+        return cached ? this->ImpactWeights[k] : ImpactWeight(logs, times, n, k);
+      };
+      tangents.shape = lct::impactSegmentShape(impact(segment), impact(segment + 1));
+    }
+    return tangents;
   }
 
   /// The curve point at curve time t: the weights of `scheme` (Spline with TangentsAt), combined
   /// relative to the key of largest weight or, with `absolute`, from the absolute logs.
   lct::Status CurveAt(const lct::KeyLogs& logs, lct::CurveScheme scheme, bool monotone,
-    bool absolute, double t, Eigen::Matrix4d& result, lct::MissingLog* missing)
+    bool straightenImpacts, bool absolute, double t, Eigen::Matrix4d& result,
+    lct::MissingLog* missing)
   {
     const int n = static_cast<int>(this->Keys.size());
     const double* times = this->Keys.times().data();
     const lct::CurveWeights w = scheme == lct::CurveScheme::CatmullRom && n > 1
-      ? lct::curveWeights(scheme, times, n, t, this->TangentsAt(logs, times, n, t, monotone))
+      ? lct::curveWeights(
+          scheme, times, n, t, this->TangentsAt(logs, times, n, t, monotone, straightenImpacts))
       : lct::curveWeights(scheme, times, n, t);
     return absolute ? logs.combineAbsolute(w, result, missing)
                     : logs.combineRelative(w, result, missing);
@@ -935,8 +975,8 @@ bool vtkTransformInterpolatorLCT::Evaluate(double t, double out[16])
   }
   Eigen::Matrix4d result;
   lct::MissingLog missing;
-  const lct::Status status = in.CurveAt(
-    *logs, scheme, this->MonotoneTangents, this->ConsistentRotation, curveTime, result, &missing);
+  const lct::Status status = in.CurveAt(*logs, scheme, this->MonotoneTangents,
+    this->StraightenImpacts, this->ConsistentRotation, curveTime, result, &missing);
   if (missing.missing())
   {
     // Every edit and setting checks the logs its curve points combine, so this is a defect.
@@ -978,7 +1018,8 @@ bool vtkTransformInterpolatorLCT::CurveTime(double t, double& curveTime, const c
   const auto positionAt = [&](double tau, Eigen::Vector3d& p, std::string& cause) {
     Eigen::Matrix4d m;
     const lct::Status status = logs
-      ? in.CurveAt(*logs, scheme, this->MonotoneTangents, this->ConsistentRotation, tau, m, nullptr)
+      ? in.CurveAt(*logs, scheme, this->MonotoneTangents, this->StraightenImpacts,
+          this->ConsistentRotation, tau, m, nullptr)
       : lct::Status::InvalidArgument;
     if (status != lct::Status::Ok)
     {
@@ -1152,6 +1193,7 @@ void vtkTransformInterpolatorLCT::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Parametrisation: " << lct::name(toCore(this->Parametrisation)) << "\n";
   os << indent << "ConsistentRotation: " << (this->ConsistentRotation ? "On" : "Off") << "\n";
   os << indent << "MonotoneTangents: " << (this->MonotoneTangents ? "On" : "Off") << "\n";
+  os << indent << "StraightenImpacts: " << (this->StraightenImpacts ? "On" : "Off") << "\n";
   vtkLCTPathTiming::Print(os, indent, this->Internal->Timing, this->ConstantSpeed);
   const Eigen::Vector3d& point = this->Internal->ConstantSpeedPoint;
   os << indent << "ConstantSpeedPoint: (" << point.x() << ", " << point.y() << ", " << point.z()

@@ -136,13 +136,24 @@ double fundamental(double x)
 void hermite(
   CurveWeights& out, const double* times, int n, int i, double u, const SegmentTangents& tangents)
 {
-  // Hermite basis on segment i, h = t[i+1] - t[i].
+  // Hermite basis on segment i, h = t[i+1] - t[i]; the rational one (Curves.h) where the shape
+  // asks for it. (NaN fails the test, so it keeps the cubic.)
   const double u2 = u * u;
   const double u3 = u2 * u;
-  const double h00 = 2 * u3 - 3 * u2 + 1;
-  const double h10 = u3 - 2 * u2 + u;
-  const double h01 = -2 * u3 + 3 * u2;
-  const double h11 = u3 - u2;
+  double h00 = 2 * u3 - 3 * u2 + 1;
+  double h10 = u3 - 2 * u2 + u;
+  double h01 = -2 * u3 + 3 * u2;
+  double h11 = u3 - u2;
+  const double r = tangents.shape;
+  if (r > 3.0 && r < 1e300)
+  {
+    const double v = 1.0 - u;
+    const double denominator = 1.0 + (r - 3.0) * u * v;
+    h00 = (v * v * v + r * u * v * v) / denominator;
+    h10 = u * v * v / denominator;
+    h01 = (r * u2 * v + u3) / denominator;
+    h11 = -u2 * v / denominator;
+  }
   const double h = times[i + 1] - times[i];
   out.add(i, h00);
   out.add(i + 1, h01);

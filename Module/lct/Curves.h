@@ -78,10 +78,20 @@ VTKLCT_EXPORT KeyTangent catmullRomTangent(const double* times, int keyCount, in
 /// The tangents of the Hermite segment holding t, at its first key (`start`, key
 /// curveSegment(t)) and at the next (`end`), for CatmullRom (the other schemes ignore them).
 /// A key's tangent must be the same on both segments beside it for the curve to be C1.
+///
+/// `shape` is r of Delbourgo & Gregory's rational cubic Hermite segment ("Shape preserving
+/// piecewise rational interpolation", SIAM J. Sci. Stat. Comput. 6(4), 1985):
+///   p(u) = [p0 (1-u)^3 + (r p0 + h m0) u (1-u)^2 + (r p1 - h m1) u^2 (1-u) + p1 u^3]
+///          / (1 + (r - 3) u (1 - u)).
+/// r = 3 is the cubic; any r >= 3 keeps the keys, the tangents (so C1 with the neighbouring
+/// segments) and the sum of the weights (1), and shrinks every tangent term by the denominator
+/// (>= 1), so the curve tends to the chord as r grows, leaving it only within ~1/r of the
+/// segment beside each key. Values below 3 (or not finite) count as 3.
 struct SegmentTangents
 {
   KeyTangent start;
   KeyTangent end;
+  double shape = 3.0;
 };
 /// CatmullRom with the given tangents (e.g. lct::monotoneTangent); with catmullRomTangent at both
 /// keys it equals curveWeights(CatmullRom, ...).

@@ -76,14 +76,83 @@ namespace
 /// off-diagonal entries stand for two each): both unchanged when the scene turns, so the tangents
 /// are too (with each off-diagonal counted once, turning every key by 45 degrees moved the curve
 /// by 0.7 %).
-double linearPartNorm(const LogCoords& step)
+Eigen::Matrix<double, 9, 1> linearPart(const LogCoords& step)
 {
   Eigen::Matrix<double, 9, 1> parts;
   parts << rotationPart(step), symmetricPart(step).head<3>(),
     std::sqrt(2.0) * symmetricPart(step).tail<3>();
-  return parts.stableNorm();
+  return parts;
+}
+
+double linearPartNorm(const LogCoords& step)
+{
+  return linearPart(step).stableNorm();
+}
+
+/// impactWeight for one part of the four steps (vectors of one unit).
+template <typename Vector>
+double partImpactWeight(const Vector& outerPrevious, const Vector& previous, const Vector& next,
+  const Vector& outerNext, const double* times, double roundOff)
+{
+  const double before = previous.stableNorm(), after = next.stableNorm();
+  if (!(before > roundOff && after > roundOff))
+  {
+    return 0.0; // still on a side (or not finite): not a turn
+  }
+  // Both steps go from key k to its neighbours: the motion turns straight back where they agree.
+  const double turn = (previous / before).dot(next / after);
+  if (!(turn > 0.0))
+  {
+    return 0.0;
+  }
+  // min(inner speeds) / max(outer speeds), each ratio of speeds as a ratio of norms times a
+  // ratio of time steps, so that no speed overflows or underflows (a still outer step: Inf).
+  const double outerBefore = outerPrevious.stableNorm(), outerAfter = outerNext.stableNorm();
+  const double hOuterBefore = times[1] - times[0], hBefore = times[2] - times[1],
+               hAfter = times[3] - times[2], hOuterAfter = times[4] - times[3];
+  const double innerOverOuter[] = { before / outerBefore * (hOuterBefore / hBefore),
+    before / outerAfter * (hOuterAfter / hBefore), after / outerBefore * (hOuterBefore / hAfter),
+    after / outerAfter * (hOuterAfter / hAfter) };
+  double ratio = HUGE_VAL;
+  for (const double r : innerOverOuter)
+  {
+    if (!(r >= 0.0))
+    {
+      return 0.0; // NaN: a still outer step (Inf) times a time ratio that underflowed
+    }
+    ratio = std::min(ratio, r);
+  }
+  const double ramp = std::clamp((ratio - kImpactOnset) / (kImpactFull - kImpactOnset), 0.0, 1.0);
+  const double turn2 = std::min(turn, 1.0) * std::min(turn, 1.0);
+  return turn2 * turn2 * ramp;
 }
 } // namespace
+
+double impactWeight(const LogCoords& outerPrevious, const LogCoords& previous,
+  const LogCoords& next, const LogCoords& outerNext, const double times[5])
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    if (!(times[i + 1] > times[i] && std::isfinite(times[i + 1] - times[i])))
+    {
+      return 0.0;
+    }
+  }
+  if (!(outerPrevious.allFinite() && previous.allFinite() && next.allFinite() &&
+        outerNext.allFinite()))
+  {
+    return 0.0;
+  }
+  const double roundOff = kRoundOffPart *
+    std::max({ outerPrevious.cwiseAbs().maxCoeff(), previous.cwiseAbs().maxCoeff(),
+      next.cwiseAbs().maxCoeff(), outerNext.cwiseAbs().maxCoeff() });
+  const double translation =
+    partImpactWeight(Eigen::Vector3d(outerPrevious.head<3>()), Eigen::Vector3d(previous.head<3>()),
+      Eigen::Vector3d(next.head<3>()), Eigen::Vector3d(outerNext.head<3>()), times, roundOff);
+  const double linear = partImpactWeight(linearPart(outerPrevious), linearPart(previous),
+    linearPart(next), linearPart(outerNext), times, roundOff);
+  return std::max(translation, linear);
+}
 
 KeyTangent monotoneTangent(
   const LogCoords& previous, const LogCoords& next, double hPrevious, double hNext)

@@ -126,6 +126,24 @@ class CameraInterpolator(unittest.TestCase):
 
 
 class Issue12(unittest.TestCase):
+    def test_impact_keys_get_nearly_straight_segments(self):
+        # A spike on a line: a quarter into the segment after it, near the chord (87.5) with
+        # StraightenImpacts on (default), the cubic's dwell (92.1875) with it off.
+        values = {}
+        for straighten in (1, 0):
+            path = vtkTransformInterpolatorLCT()
+            self.assertEqual(path.GetStraightenImpacts(), 1)
+            path.SetStraightenImpacts(straighten)
+            for k, x in enumerate((0, 10, 20, 30, 100, 50, 60, 70, 80)):
+                t = vtkTransform()
+                t.Translate(x, 0, 0)
+                self.assertEqual(path.AddTransform(k, t), 1)
+            m = vtkMatrix4x4()
+            self.assertEqual(path.InterpolateTransform(4.25, m), 1)
+            values[straighten] = m.GetElement(0, 3)
+        self.assertAlmostEqual(values[1], 87.5, delta=0.5)
+        self.assertAlmostEqual(values[0], 92.1875, delta=1e-9)
+
     def test_monotone_tangents_do_not_swing_past_the_keys(self):
         peaks = {}
         for monotone in (1, 0):
