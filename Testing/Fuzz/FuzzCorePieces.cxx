@@ -406,20 +406,9 @@ void Combinations(lct_fuzz::Input& in)
 
 void Weights(lct_fuzz::Input& in)
 {
-  const int n = in.Int(1, 12);
-  std::vector<double> times;
-  for (int i = 0; i < n; ++i)
-  {
-    times.push_back(in.Finite());
-  }
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  const std::vector<double> times = in.KeyTimes(1, 12);
   const int keys = static_cast<int>(times.size());
-  double t = in.Double();
-  if (std::isnan(t))
-  {
-    t = 0.0; // callers reject NaN before asking for weights
-  }
+  const double t = in.QueryTime();
   const lct::CurveScheme scheme = static_cast<lct::CurveScheme>(in.Int(0, 4));
   // A finite span is a precondition (lct/Curves.h; the interpolators refuse key times that
   // break it): beyond it nothing is promised but the absence of undefined behaviour (D11: NaN

@@ -46,24 +46,13 @@ void ImpactWeight(lct_fuzz::Input& in)
 
 void RationalSegment(lct_fuzz::Input& in)
 {
-  const int n = in.Int(2, 8);
-  std::vector<double> times;
-  for (int i = 0; i < n; ++i)
-  {
-    times.push_back(in.Finite());
-  }
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  const std::vector<double> times = in.KeyTimes(2, 8);
   const int keys = static_cast<int>(times.size());
   if (keys < 2 || !std::isfinite(times.back() - times.front()))
   {
     return; // one key, or a span beyond the precondition (lct/Curves.h)
   }
-  double t = in.Double();
-  if (std::isnan(t))
-  {
-    t = 0.0; // callers reject NaN before asking for weights
-  }
+  const double t = in.QueryTime();
   // Tangent weights as the rules give them: Catmull-Rom's times a factor in [-2, 2] (Kochanek-
   // Bartels scales them so; the monotone weights shrink with the time step of the faster side).
   // Weights independent of the time steps overflow with steps 1e8 and 1e-312 whatever the shape.

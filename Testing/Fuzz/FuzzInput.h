@@ -253,6 +253,27 @@ public:
     return std::isfinite(d) ? d : 0.0;
   }
 
+  /// minCount..maxCount finite times, sorted, repeats removed (so possibly fewer), as key times.
+  std::vector<double> KeyTimes(int minCount, int maxCount)
+  {
+    const int n = this->Int(minCount, maxCount);
+    std::vector<double> times;
+    for (int i = 0; i < n; ++i)
+    {
+      times.push_back(this->Finite());
+    }
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    return times;
+  }
+
+  /// A query time: any double but NaN (callers reject NaN before asking for curve weights).
+  double QueryTime()
+  {
+    const double t = this->Double();
+    return std::isnan(t) ? 0.0 : t;
+  }
+
   /// A positive scale factor: 1, repeated, huge, tiny, or at the singularity threshold of the
   /// polar log (the smallest stretch eigenvalue must exceed 8 eps times the largest).
   double Scale()
