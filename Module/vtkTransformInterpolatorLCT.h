@@ -261,9 +261,9 @@ public:
    * the key are nearly straight (Delbourgo & Gregory's rational cubic, lct::SegmentTangents) with
    * the same keys and tangents, so still C1 and without overshoot, instead of dwelling near the
    * key for a third of each segment. A smooth turn (reached slowly) and a swing keyed at its
-   * extremes (the same speed throughout) keep the cubic. Keys with their own tension, continuity
-   * or bias are left to them. Default on; off gives the cubic everywhere (the curves of vtkLCT
-   * before this setting).
+   * extremes (the same speed throughout) keep the cubic. Keys with tension, continuity or bias
+   * (their own or the path's) are left to them. Default on; off gives the cubic everywhere (the
+   * curves of vtkLCT before this setting).
    */
   vtkSetMacro(StraightenImpacts, vtkTypeBool);
   vtkGetMacro(StraightenImpacts, vtkTypeBool);
