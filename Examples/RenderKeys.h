@@ -258,11 +258,13 @@ struct PathTiming
 };
 
 /// The values of "tangents": the interpolators' MonotoneTangents on (Fritsch & Butland's
-/// tangents, the default: no overshoot where a path slows down or turns back) and off (plain
-/// Catmull-Rom).
+/// tangents, the default: no overshoot where a path slows down or turns back; for props with
+/// vtkTransformInterpolatorLCT's StraightenImpacts on), on with StraightenImpacts off
+/// ("monotone_cubic": the cubic beside impact keys too; the camera has no impact rule, so for it
+/// the same as "monotone"), and off (plain Catmull-Rom).
 inline const std::vector<std::string>& TangentNames()
 {
-  static const std::vector<std::string> names = { "monotone", "catmull_rom" };
+  static const std::vector<std::string> names = { "monotone", "monotone_cubic", "catmull_rom" };
   return names;
 }
 

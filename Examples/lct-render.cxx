@@ -130,7 +130,7 @@ options:
                      Kochanek-Bartels tension, continuity and bias (each in [-1, 1]) of the
                      camera path and every prop path, replacing the paths' own "tension",
                      "continuity", "bias" (keys with their own keep them); spline type only
-  --tangents monotone|catmull_rom
+  --tangents monotone|monotone_cubic|catmull_rom
                      the spline's tangents on the camera path and every prop path, replacing
                      the paths' own "tangents" (see "timing")
   --ease-in E, --ease-out E
@@ -208,7 +208,7 @@ fields (defaults after "="): scene: size = --size or 640x360, anti_aliasing = ms
   rotate is an orientation (720 and 0 are the same key, 270 is -90), and the path between two
   keys turns the short way; key a turn of more than 180 degrees in steps below 180.
   Timing (see "timing" below), of the camera and of each props.NAME: tension = 0,
-  continuity = 0, bias = 0 (each in [-1, 1]), tangents = monotone (catmull_rom), ease_in = 0,
+  continuity = 0, bias = 0 (each in [-1, 1]), tangents = monotone (monotone_cubic, catmull_rom), ease_in = 0,
   ease_out = 0 (each in [0, 1]), constant_speed = false; the camera's constant_speed_measure = eye_and_focal_point (eye,
   focal_point), a prop's constant_speed_point = [0,0,0]. Of every camera and prop key:
   tension, continuity, bias (none: the path's; any one given: the key's own, the others 0),
@@ -236,7 +236,9 @@ timing: tension, continuity and bias are the Kochanek-Bartels parameters of the 
   (vtkKochanekSpline's, applied in log space; all 0: the default tangents), for the keys without
   their own; every key is still reached at its time. tangents: the spline's tangents at keys
   without tension, continuity or bias: monotone (Fritsch & Butland's, the default: no
-  overshoot where the path slows down, stops or turns back at a key) or catmull_rom (the
+  overshoot where the path slows down, stops or turns back at a key; a prop's path is nearly
+  straight beside a key it bounces off), monotone_cubic (the same tangents, the cubic beside
+  such keys too; for the camera the same as monotone) or catmull_rom (the
   tangent parallel to the chord of the two neighbours, which swings past such keys). A path's
   ease_in makes it start slowly, ease_out end slowly (1: from or to rest; on the first and
   last key segment, with constant_speed on the whole path). A key's ease_in slows the motion arriving at it, ease_out
@@ -767,7 +769,7 @@ std::string ParseArgs(int argc, char* argv[], Options& o, bool& help)
       const auto& names = RenderKeys::TangentNames();
       if (!value(v) || std::find(names.begin(), names.end(), v) == names.end())
       {
-        return "--tangents expects monotone or catmull_rom" +
+        return "--tangents expects monotone, monotone_cubic or catmull_rom" +
           (v.empty() ? std::string("") : " (got " + RenderKeys::Printable(v) + ")");
       }
       o.Tangents = v;
@@ -935,7 +937,11 @@ std::string ApplyTiming(Interpolator* path, const RenderKeys::PathTiming& t,
     return refused(
       "tension " + Num(t.Tension) + ", continuity " + Num(t.Continuity) + ", bias " + Num(t.Bias));
   }
-  path->SetMonotoneTangents(t.Tangents == "monotone");
+  path->SetMonotoneTangents(t.Tangents != "catmull_rom");
+  if constexpr (std::is_same<Interpolator, vtkTransformInterpolatorLCT>::value)
+  {
+    path->SetStraightenImpacts(t.Tangents == "monotone");
+  }
   if (!path->SetEaseIn(t.EaseIn) || !path->SetEaseOut(t.EaseOut))
   {
     return refused("ease in " + Num(t.EaseIn) + ", ease out " + Num(t.EaseOut));
@@ -990,12 +996,28 @@ std::string KeyTimingText(const RenderKeys::KeyTiming& k)
 
 /// The timing `path` holds, for --describe: tension, continuity, bias, eases, constant speed
 /// and, with constant speed, the times at which the path passes its keys (GetKeyArrivalTimes).
+/// The "tangents" value `path` holds (one of RenderKeys::TangentNames()).
+template <typename Interpolator>
+const std::string& TangentsName(Interpolator* path)
+{
+  const auto& names = RenderKeys::TangentNames();
+  if (!path->GetMonotoneTangents())
+  {
+    return names[2];
+  }
+  if constexpr (std::is_same<Interpolator, vtkTransformInterpolatorLCT>::value)
+  {
+    return names[path->GetStraightenImpacts() ? 0 : 1];
+  }
+  return names[0];
+}
+
 template <typename Interpolator>
 std::string PathTimingText(Interpolator* path, bool keyEases, ErrorCatcher& errors)
 {
   std::string out = "tension " + Num(path->GetTension()) + ", continuity " +
     Num(path->GetContinuity()) + ", bias " + Num(path->GetBias()) + ", tangents " +
-    RenderKeys::TangentNames()[path->GetMonotoneTangents() ? 0 : 1];
+    TangentsName(path);
   const bool tcb =
     path->GetTension() != 0.0 || path->GetContinuity() != 0.0 || path->GetBias() != 0.0;
   if (path->GetInterpolationType() != Interpolator::INTERPOLATION_TYPE_SPLINE)
