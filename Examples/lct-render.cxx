@@ -994,8 +994,6 @@ std::string KeyTimingText(const RenderKeys::KeyTiming& k)
   return out;
 }
 
-/// The timing `path` holds, for --describe: tension, continuity, bias, eases, constant speed
-/// and, with constant speed, the times at which the path passes its keys (GetKeyArrivalTimes).
 /// The "tangents" value `path` holds (one of RenderKeys::TangentNames()).
 template <typename Interpolator>
 const std::string& TangentsName(Interpolator* path)
@@ -1012,6 +1010,8 @@ const std::string& TangentsName(Interpolator* path)
   return names[0];
 }
 
+/// The timing `path` holds, for --describe: tension, continuity, bias, eases, constant speed
+/// and, with constant speed, the times at which the path passes its keys (GetKeyArrivalTimes).
 template <typename Interpolator>
 std::string PathTimingText(Interpolator* path, bool keyEases, ErrorCatcher& errors)
 {
